@@ -1,0 +1,96 @@
+"""Point location by a remembering stochastic visibility walk.
+
+From a start triangle, cross any edge that has the query point strictly on
+its outer side, testing the three edges from a random first one (Devillers,
+Pion and Teillaud's stochastic walk, which cannot cycle in any
+triangulation).  The walk stops when no edge separates the point, in a ghost
+triangle (the point is outside the convex hull) or at a mesh-boundary edge.
+Every walk is bounded; a walk that runs out of steps reports ``LOC_FAILED``
+and the caller falls back to a scan.
+"""
+
+from __future__ import annotations
+
+
+from .jit import kernel, kernel_inline
+from .counters import C_ORIENT, C_WALK
+from .mesh import GHOST, NO_EDGE, is_ghost, lnext, lprev
+from .predicates import orient2d
+
+LOC_INSIDE = 0  # strictly inside triangle edge // 3
+LOC_ON_EDGE = 1  # on the open edge
+LOC_ON_VERTEX = 2  # equal to org(edge)
+LOC_OUTSIDE = 3  # across edge: a ghost triangle's finite edge, or a boundary edge
+LOC_FAILED = 4
+
+
+@kernel_inline
+def next_random(state):
+    """Advance the walk's LCG (kept in ``state[0]``) and return 0, 1 or 2."""
+    state[0] = (state[0] * 6364136223846793005 + 1442695040888963407) & 0x7FFFFFFFFFFFFFFF
+    return (state[0] >> 33) % 3
+
+
+@kernel
+def finite_start(m, t):
+    """A finite triangle at or next to ``t`` (a ghost's neighbour across its hull edge)."""
+    if not is_ghost(m, t):
+        return t
+    for k in range(3):
+        if m.corner[3 * t + k] == GHOST:
+            return m.twin[3 * t + k] // 3
+    return t
+
+
+@kernel
+def walk(m, work, t, px, py, state, max_steps):
+    """Locate ``(px, py)`` starting from finite triangle ``t``.
+
+    Returns ``(status, e)``: for LOC_INSIDE ``e = 3 * triangle``; for
+    LOC_ON_EDGE the edge; for LOC_ON_VERTEX an edge whose origin is the
+    vertex; for LOC_OUTSIDE the ghost triangle's finite edge (or, in a mesh
+    without ghosts, the boundary edge the point lies beyond).
+    """
+    xy = m.xy
+    steps = 0
+    while steps < max_steps:
+        steps += 1
+        work[C_WALK] += 1
+        r = next_random(state)
+        zeros = 0
+        zero_edge = -1
+        moved = False
+        for i in range(3):
+            k = r + i
+            if k >= 3:
+                k -= 3
+            e = 3 * t + k
+            o = m.corner[lnext(e)]
+            d = m.corner[lprev(e)]
+            work[C_ORIENT] += 1
+            s = orient2d(xy[o, 0], xy[o, 1], xy[d, 0], xy[d, 1], px, py)
+            if s < 0.0:
+                tw = m.twin[e]
+                if tw == NO_EDGE:
+                    return LOC_OUTSIDE, e
+                t = tw // 3
+                if is_ghost(m, t):
+                    return LOC_OUTSIDE, tw
+                moved = True
+                break
+            if s == 0.0:
+                zeros += 1
+                zero_edge = e
+        if moved:
+            continue
+        if zeros == 0:
+            return LOC_INSIDE, 3 * t
+        if zeros == 1:
+            return LOC_ON_EDGE, zero_edge
+        for k in range(3):
+            e = 3 * t + k
+            v = m.corner[lnext(e)]
+            if xy[v, 0] == px and xy[v, 1] == py:
+                return LOC_ON_VERTEX, e
+        return LOC_ON_EDGE, zero_edge  # unreachable for exact predicates
+    return LOC_FAILED, -1

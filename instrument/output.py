@@ -1,0 +1,58 @@
+"""Turn the engine's mesh into the `triangle` package's output dict.
+
+Keys, shapes and dtypes follow the `triangle` package: (N, 1) int32 markers,
+int32 indices, float64 coordinates, and keys for empty arrays left out.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .mesh import NO_EDGE, Mesh, live_triangles
+
+
+class Result(dict):
+    """The output dict, plus ``work`` (counters), ``trace`` and ``steps``."""
+
+    work: dict[str, int]
+    trace: object
+    steps: object
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        self.work = {}
+        self.trace = None
+        self.steps = None
+
+
+def _col(a, dtype=np.int32) -> np.ndarray:
+    return np.ascontiguousarray(np.asarray(a, dtype=dtype).reshape(-1, 1))
+
+
+def _put(out: dict, key: str, arr: np.ndarray) -> None:
+    if arr is not None and arr.size > 0:
+        out[key] = np.ascontiguousarray(arr)
+
+
+def hull_edges(m: Mesh, tris: np.ndarray) -> np.ndarray:
+    """Boundary edges (org, dest) of the live triangles ``tris``, interior on the left."""
+    e = (3 * tris[:, None] + np.arange(3)).ravel()
+    e = e[m.twin[e] == NO_EDGE]
+    nxt = np.where(e % 3 == 2, e - 2, e + 1)
+    prv = np.where(e % 3 == 0, e + 2, e - 1)
+    return np.stack([m.corner[nxt], m.corner[prv]], axis=1)
+
+
+def unique_edges(m: Mesh, tris: np.ndarray, tri_index: np.ndarray) -> np.ndarray:
+    """Each edge once, as Triangle lists them: triangle by triangle, edges
+    0, 1, 2, taking an edge when its neighbour is absent or comes later."""
+    e = (3 * tris[:, None] + np.arange(3)).ravel()
+    tw = m.twin[e]
+    keep = (tw == NO_EDGE) | (tri_index[np.maximum(tw, 0) // 3] > tri_index[e // 3])
+    return e[keep]
+
+
+def edge_ends(m: Mesh, e: np.ndarray) -> np.ndarray:
+    nxt = np.where(e % 3 == 2, e - 2, e + 1)
+    prv = np.where(e % 3 == 0, e + 2, e - 1)
+    return np.stack([m.corner[nxt], m.corner[prv]], axis=1)

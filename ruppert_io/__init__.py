@@ -1,0 +1,24 @@
+"""ruppert_io: Triangle's file formats, and meshio conversion, for ruppert.
+
+``read``/``write`` handle ``.node``, ``.poly``, ``.ele``, ``.area``, ``.edge``,
+``.neigh`` (and write ``.v.node``, ``.v.edge``, ``.off``) exactly as Triangle 1.6
+reads and prints them, with the ``triangle`` package's dict keys.  Importing this
+package registers the meshio format ``"triangle"`` for ``.node``/``.ele``/``.poly``.
+"""
+
+from .api import Info, read, read_with_info, write, write_voronoi
+from .errors import FormatError
+from .meshio_plugin import from_meshio, register, to_meshio
+
+__all__ = [
+    "FormatError",
+    "Info",
+    "from_meshio",
+    "read",
+    "read_with_info",
+    "to_meshio",
+    "write",
+    "write_voronoi",
+]
+
+register()

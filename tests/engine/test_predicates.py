@@ -1,0 +1,425 @@
+"""Tests of instrument/predicates.py against exact rational arithmetic.
+
+The oracle is `fractions.Fraction`: every double is a dyadic rational, so the
+determinants below are computed exactly.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+import pathlib
+import subprocess
+import sys
+from fractions import Fraction
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from instrument import predicates as P
+from instrument.predicates import incircle, incircle_fast, orient2d, orient2d_fast
+
+MODULE_PATH = pathlib.Path(P.__file__)
+
+
+# ---------------------------------------------------------------------------
+# Oracles
+# ---------------------------------------------------------------------------
+def exact_orient(ax, ay, bx, by, cx, cy) -> Fraction:
+    ax, ay, bx, by, cx, cy = map(Fraction, (ax, ay, bx, by, cx, cy))
+    return (ax - cx) * (by - cy) - (ay - cy) * (bx - cx)
+
+
+def exact_incircle(ax, ay, bx, by, cx, cy, dx, dy) -> Fraction:
+    ax, ay, bx, by, cx, cy, dx, dy = map(Fraction, (ax, ay, bx, by, cx, cy, dx, dy))
+    adx, ady, bdx, bdy, cdx, cdy = ax - dx, ay - dy, bx - dx, by - dy, cx - dx, cy - dy
+    return (
+        (adx * adx + ady * ady) * (bdx * cdy - cdx * bdy)
+        + (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy)
+        + (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady)
+    )
+
+
+def sign(x) -> int:
+    return (x > 0) - (x < 0)
+
+
+def check_orient(*c):
+    got = orient2d(*c)
+    assert sign(got) == sign(exact_orient(*c)), c
+    return got
+
+
+def check_incircle(*c):
+    got = incircle(*c)
+    assert sign(got) == sign(exact_incircle(*c)), c
+    return got
+
+
+def scaled(coords, k):
+    """coords * 2^k, or None if that is not exact (underflow / overflow)."""
+    out = tuple(v * 2.0**k for v in coords)
+    if all(math.ldexp(w, -k) == v for v, w in zip(coords, out)):
+        return out
+    return None
+
+
+def nudge(x: float, ulps: int) -> float:
+    for _ in range(abs(ulps)):
+        x = math.nextafter(x, math.inf if ulps > 0 else -math.inf)
+    return x
+
+
+# ---------------------------------------------------------------------------
+# Conventions and constants
+# ---------------------------------------------------------------------------
+def test_constants_match_reference():
+    table = {
+        "EPSILON": 1.1102230246251565e-16,
+        "SPLITTER": 134217729.0,
+        "RESULTERRBOUND": 3.3306690738754706e-16,
+        "CCWERRBOUNDA": 3.3306690738754716e-16,
+        "CCWERRBOUNDB": 2.2204460492503146e-16,
+        "CCWERRBOUNDC": 1.1093356479670487e-31,
+        "ICCERRBOUNDA": 1.1102230246251577e-15,
+        "ICCERRBOUNDB": 4.440892098500632e-16,
+        "ICCERRBOUNDC": 5.423418723394464e-31,
+    }
+    for name, value in table.items():
+        assert getattr(P, name) == value, name
+
+
+def test_sign_convention():
+    # orient2d > 0 iff counter-clockwise (Shewchuk's convention, not robust-predicates')
+    assert orient2d(0.0, 0.0, 1.0, 0.0, 0.0, 1.0) > 0
+    assert orient2d(0.0, 0.0, 0.0, 1.0, 1.0, 0.0) < 0
+    assert orient2d(0.0, 0.0, 1.0, 1.0, 2.0, 2.0) == 0
+    assert orient2d(0.0, 0.0, 1.0, 0.0, 0.0, 1.0) == 1.0  # twice the signed area
+    # incircle > 0 iff d strictly inside the circle through ccw a, b, c
+    ccw = (1.0, 0.0, 0.0, 1.0, -1.0, 0.0)
+    assert incircle(*ccw, 0.0, 0.0) > 0
+    assert incircle(*ccw, 2.0, 0.0) < 0
+    assert incircle(*ccw, 0.0, -1.0) == 0
+    cw = (1.0, 0.0, -1.0, 0.0, 0.0, 1.0)
+    assert incircle(*cw, 0.0, 0.0) < 0
+    for fast, exact, args in [
+        (orient2d_fast, orient2d, (0.0, 0.0, 1.0, 0.0, 0.0, 1.0)),
+        (incircle_fast, incircle, ccw + (0.1, 0.2)),
+    ]:
+        assert fast(*args) == exact(*args) > 0
+
+
+def test_no_fastmath_in_module():
+    assert "fastmath" not in MODULE_PATH.read_text()
+
+
+def test_fast_twins_and_common_path_return_triangles_det():
+    rng = np.random.default_rng(1)
+    for row in rng.uniform(-10, 10, size=(300, 8)):
+        ax, ay, bx, by, cx, cy, dx, dy = (float(v) for v in row)
+        det_o = (ax - cx) * (by - cy) - (ay - cy) * (bx - cx)
+        assert orient2d_fast(ax, ay, bx, by, cx, cy) == det_o
+        assert orient2d(ax, ay, bx, by, cx, cy) == det_o  # certified by stage A
+        adx, ady, bdx, bdy, cdx, cdy = ax - dx, ay - dy, bx - dx, by - dy, cx - dx, cy - dy
+        det_i = (
+            (adx * adx + ady * ady) * (bdx * cdy - cdx * bdy)
+            + (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy)
+            + (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady)
+        )
+        assert incircle_fast(ax, ay, bx, by, cx, cy, dx, dy) == det_i
+        assert incircle(ax, ay, bx, by, cx, cy, dx, dy) == det_i
+
+
+# ---------------------------------------------------------------------------
+# Random and near-degenerate inputs against the rational oracle
+# ---------------------------------------------------------------------------
+@pytest.mark.parametrize("kind", ["uniform", "small-integers", "wide-exponents"])
+def test_random_inputs_match_fractions(kind):
+    rng = np.random.default_rng(abs(hash(kind)) % 2**32)
+    n = 400
+    if kind == "uniform":
+        data = rng.uniform(-1, 1, size=(n, 8))
+    elif kind == "small-integers":  # many exact degeneracies
+        data = rng.integers(-3, 4, size=(n, 8)).astype(float)
+    else:
+        data = rng.uniform(0.5, 1, size=(n, 8)) * np.exp2(rng.integers(-40, 40, size=(n, 8)))
+        data *= rng.choice([-1.0, 1.0], size=(n, 8))
+    for row in data:
+        c = tuple(float(v) for v in row)
+        check_orient(*c[:6])
+        check_incircle(*c)
+
+
+@pytest.mark.parametrize("step", [2.0**-53, 2.0**-43])
+def test_orient2d_near_line_grid(step):
+    # c walks a 64x64 grid of ulp-spaced points around the line y = x through (12,12),(24,24)
+    signs = set()
+    naive_wrong = 0
+    for i in range(64):
+        for j in range(64):
+            c = (0.5 + i * step, 0.5 + j * step)
+            s = sign(check_orient(12.0, 12.0, 24.0, 24.0, *c))
+            signs.add(s)
+            naive_wrong += sign(orient2d_fast(12.0, 12.0, 24.0, 24.0, *c)) != s
+            # and with the roles permuted
+            check_orient(*c, 12.0, 12.0, 24.0, 24.0)
+    assert signs == {-1, 0, 1}
+    if step == 2.0**-53:
+        assert naive_wrong > 0  # the plain determinant really fails here
+
+
+@pytest.mark.parametrize("shift", [(0.0, 0.0), (0.1, 0.3), (1e6 + 0.1, -3e5 + 0.7)])
+def test_incircle_near_circle_grid(shift):
+    # a, b, c, and the centre of the grid lie on x^2 + y^2 = 25 (exactly, before the shift)
+    sx, sy = shift
+    pts = [(5.0, 0.0), (0.0, 5.0), (-3.0, -4.0)]
+    abc = tuple(v for x, y in pts for v in (x + sx, y + sy))
+    x0, y0 = 3.0 + sx, 4.0 + sy
+    ux, uy = math.ulp(x0), math.ulp(y0)
+    signs = set()
+    for i in range(-24, 24):
+        for j in range(-24, 24):
+            signs.add(sign(check_incircle(*abc, x0 + i * ux, y0 + j * uy)))
+    assert {-1, 1} <= signs
+
+
+def test_exact_collinear_and_cocircular():
+    rng = np.random.default_rng(7)
+    for _ in range(300):
+        a = rng.integers(-1000, 1000, size=2).astype(float)
+        b = rng.integers(-1000, 1000, size=2).astype(float)
+        t = float(rng.integers(-8, 9)) / 8.0
+        c = a + t * (b - a)
+        k = int(rng.integers(-700, 700))
+        pts = [math.ldexp(float(v), k) for v in (*a, *b, *c)]
+        assert orient2d(*pts) == 0
+        assert orient2d(*pts[2:], *pts[:2]) == 0
+    # lattice points of the circle of radius 65 (Pythagorean triples)
+    base = [(0, 65), (16, 63), (25, 60), (33, 56), (39, 52)]
+    circle = sorted({(sx * x, sy * y) for x, y in base for x, y in ((x, y), (y, x))
+                     for sx in (1, -1) for sy in (1, -1)})
+    assert all(x * x + y * y == 65**2 for x, y in circle)
+    for _ in range(300):
+        idx = rng.choice(len(circle), size=4, replace=False)
+        ox, oy = (float(v) for v in rng.integers(-10**6, 10**6, size=2))
+        k = int(rng.integers(-200, 200))
+        pts = [math.ldexp(float(v), k) for i in idx
+               for v in (circle[i][0] + ox, circle[i][1] + oy)]
+        assert incircle(*pts) == 0
+        # a point just off the circle is classified exactly
+        check_incircle(*pts[:6], nudge(pts[6], 1), pts[7])
+        check_incircle(*pts[:6], nudge(pts[6], -1), pts[7])
+
+
+def _near_degenerate_cases():
+    """Some hard orient2d / incircle inputs (most reach stages C and D)."""
+    rng = np.random.default_rng(3)
+    ocases, icases = [], []
+    for _ in range(60):
+        a = rng.uniform(-1, 1, 2)
+        b = rng.uniform(-1, 1, 2)
+        t = rng.uniform(-1, 2)
+        c = a + t * (b - a)
+        c = (nudge(float(c[0]), int(rng.integers(-2, 3))), float(c[1]))
+        ocases.append((*map(float, a), *map(float, b), *c))
+        ctr = rng.uniform(-1, 1, 2)
+        r = rng.uniform(0.1, 2)
+        ang = rng.uniform(0, 2 * np.pi, 4)
+        pts = [(float(ctr[0] + r * np.cos(t)), float(ctr[1] + r * np.sin(t))) for t in ang]
+        icases.append(tuple(v for p in pts for v in p))
+    return ocases, icases
+
+
+@pytest.mark.parametrize("k", [600, -600, 1000, -1000, 0])
+def test_power_of_two_scaling_keeps_signs(k):
+    ocases, icases = _near_degenerate_cases()
+    for c in ocases:
+        s = sign(exact_orient(*c))
+        cs = scaled(c, k)
+        assert cs is not None
+        assert sign(orient2d(*cs)) == s
+    for c in icases:
+        s = sign(exact_incircle(*c))
+        cs = scaled(c, k)
+        assert cs is not None
+        assert sign(incircle(*cs)) == s
+
+
+def test_underflow_and_overflow_inputs():
+    tiny = 5e-324
+    # products underflow to 0: the plain determinant says "collinear", wrongly
+    assert orient2d_fast(0.0, 0.0, tiny, 0.0, 0.0, tiny) == 0.0
+    assert orient2d(0.0, 0.0, tiny, 0.0, 0.0, tiny) > 0
+    assert orient2d(0.0, 0.0, 0.0, tiny, tiny, 0.0) < 0
+    assert incircle(tiny, 0.0, 0.0, tiny, -tiny, 0.0, 0.0, 0.0) > 0
+    assert incircle(2 * tiny, 0.0, 0.0, 2 * tiny, -2 * tiny, 0.0, 3 * tiny, 0.0) < 0
+    assert incircle(2 * tiny, 0.0, 0.0, 2 * tiny, -2 * tiny, 0.0, 0.0, -2 * tiny) == 0
+    # differences overflow
+    big = 1.7e308
+    check_orient(-big, -big, big, -big, 0.0, big)
+    check_orient(-big, -big, big, big, 0.0, 1e-300)
+    check_incircle(big, 0.0, 0.0, big, -big, 0.0, 0.0, -big)
+    check_incircle(big, 0.0, 0.0, big, -big, 0.0, 1e300, 1e300)
+    check_incircle(big, 0.0, 0.0, big, -big, 0.0, 0.0, nudge(-big, 1))
+
+
+def test_mixed_magnitudes_use_exact_fallback():
+    big, small = 2.0**600, 2.0**-600
+    # exactly collinear although the coordinates span 2^1201
+    assert orient2d(0.0, 0.0, big, small, 2 * big, 2 * small) == 0
+    check_orient(0.0, 0.0, big, small, 2 * big, nudge(2 * small, 1))
+    check_orient(0.0, 0.0, big, small, nudge(2 * big, -1), 2 * small)
+    check_orient(1e200, 1e-200, -1e-200, 1e200, 3e-300, 1e-300)
+    rng = np.random.default_rng(11)
+    for _ in range(100):
+        c = rng.uniform(0.5, 1, 8) * np.exp2(rng.integers(-1000, 1000, 8))
+        c *= rng.choice([-1.0, 1.0, 0.0], size=8, p=[0.45, 0.45, 0.1])
+        c = tuple(float(v) for v in c)
+        check_orient(*c[:6])
+        check_incircle(*c)
+    # cocircular points of the radius-65 circle, one coordinate huge apart
+    assert incircle(65.0, 0.0, 0.0, 65.0, -65.0, 0.0, 0.0, -65.0) == 0
+    check_incircle(65.0 * big, 0.0, 0.0, 65.0 * big, -65.0 * big, 0.0, small, -65.0 * big)
+
+
+def test_nonfinite_inputs_return():
+    nan, inf = math.nan, math.inf
+    for args in [(nan, 0.0, 1.0, 0.0, 0.0, 1.0), (inf, 0.0, 1.0, 0.0, 0.0, 1.0),
+                 (inf, inf, -inf, 0.0, 0.0, nan)]:
+        assert isinstance(orient2d(*args), float)
+        assert isinstance(incircle(*args, 0.5, 0.5), float)
+
+
+# ---------------------------------------------------------------------------
+# The exact stages in isolation
+# ---------------------------------------------------------------------------
+def _heads_tails(coords, ref):
+    heads = [v - r for v, r in zip(coords, ref)]
+    tails = [float(Fraction(v) - Fraction(r) - Fraction(h)) for v, r, h in zip(coords, ref, heads)]
+    assert all(Fraction(v) - Fraction(r) == Fraction(h) + Fraction(t)
+               for v, r, h, t in zip(coords, ref, heads, tails))
+    return heads, tails
+
+
+def _assert_expansion(comps, exact):
+    assert sum(map(Fraction, comps), Fraction(0)) == exact
+    mags = [abs(c) for c in comps if c != 0]
+    assert mags == sorted(mags)
+
+
+def test_stage_d_expansions_are_exact():
+    rng = np.random.default_rng(5)
+    for trial in range(150):
+        c = rng.uniform(0.5, 1, 8) * np.exp2(rng.integers(-30, 30, 8))
+        c *= rng.choice([-1.0, 1.0], size=8)
+        if trial % 3 == 0:  # some zero tails
+            c[rng.integers(0, 8, 3)] = np.round(c[rng.integers(0, 8, 3)])
+        c = tuple(float(v) for v in c)
+        # orient2d: differences against c
+        (acx, acy, bcx, bcy), (acxt, acyt, bcxt, bcyt) = _heads_tails(
+            c[0:4], (c[4], c[5], c[4], c[5]))
+        b1, b0 = P._two_product(acx, bcy)
+        r1, r0 = P._two_product(acy, bcx)
+        b = P._two_two_diff(b1, b0, r1, r0)
+        w = np.zeros(44)
+        n = P._orient2d_expansion_d(acx, acy, bcx, bcy, acxt, acyt, bcxt, bcyt, *b, w)
+        _assert_expansion(w[28:28 + n], exact_orient(*c[:6]))
+        # incircle: differences against d
+        d = (c[6], c[7]) * 3
+        coords = (c[0], c[2], c[4], c[1], c[3], c[5])
+        ref = (c[6], c[6], c[6], c[7], c[7], c[7])
+        heads, tails = _heads_tails(coords, ref)
+        wb = np.zeros(316)
+        nb = P._incircle_expansion_b(*heads, wb)
+        fin, m = P._incircle_expansion_d(*heads, *tails, wb, nb)
+        _assert_expansion(fin[:m], exact_incircle(*c))
+        assert d  # (silence linters)
+
+
+def test_adaptive_stages_match_oracle_when_forced():
+    # an infinite error bound makes every stage defer to the next one
+    ocases, icases = _near_degenerate_cases()
+    rng = np.random.default_rng(9)
+    extra = [tuple(float(v) for v in rng.uniform(-1, 1, 8)) for _ in range(50)]
+    for c in ocases + [e[:6] for e in extra]:
+        assert sign(P._orient2d_adapt(*c, math.inf)) == sign(exact_orient(*c))
+    for c in icases + extra:
+        assert sign(P._incircle_adapt(*c, math.inf)) == sign(exact_incircle(*c))
+
+
+# ---------------------------------------------------------------------------
+# Hypothesis: nearly degenerate inputs
+# ---------------------------------------------------------------------------
+coord = st.floats(min_value=-1e6, max_value=1e6, allow_nan=False, allow_infinity=False)
+exponent = st.sampled_from([0, 0, 0, 600, -600, 900, -900])
+
+
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(ax=coord, ay=coord, bx=coord, by=coord,
+       t=st.floats(min_value=-2, max_value=3), ux=st.integers(-3, 3),
+       uy=st.integers(-3, 3), k=exponent)
+def test_hypothesis_near_collinear(ax, ay, bx, by, t, ux, uy, k):
+    cx = nudge(ax + t * (bx - ax), ux)
+    cy = nudge(ay + t * (by - ay), uy)
+    c = (ax, ay, bx, by, cx, cy)
+    expected = sign(exact_orient(*c))
+    assert sign(orient2d(*c)) == expected
+    cs = scaled(c, k)
+    if cs is not None:
+        assert sign(orient2d(*cs)) == expected
+
+
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(x0=coord, y0=coord, r=st.floats(min_value=1e-3, max_value=1e3),
+       angles=st.lists(st.floats(min_value=0, max_value=6.3), min_size=4, max_size=4),
+       ux=st.integers(-2, 2), uy=st.integers(-2, 2), k=exponent)
+def test_hypothesis_near_cocircular(x0, y0, r, angles, ux, uy, k):
+    pts = [(x0 + r * math.cos(a), y0 + r * math.sin(a)) for a in angles]
+    c = tuple(v for p in pts for v in p)
+    c = c[:6] + (nudge(c[6], ux), nudge(c[7], uy))
+    expected = sign(exact_incircle(*c))
+    assert sign(incircle(*c)) == expected
+    cs = scaled(c, k)
+    if cs is not None:
+        assert sign(incircle(*cs)) == expected
+
+
+# ---------------------------------------------------------------------------
+# Pure Python (NUMBA_DISABLE_JIT=1) gives the same values as the compiled code
+# ---------------------------------------------------------------------------
+_NOJIT_SCRIPT = r"""
+import importlib.util, json, sys
+spec = importlib.util.spec_from_file_location("predicates_nojit", sys.argv[1])
+mod = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(mod)
+cases = json.loads(sys.stdin.read())
+out = {"orient": [mod.orient2d(*c[:6]).hex() for c in cases],
+       "incircle": [mod.incircle(*c).hex() for c in cases],
+       "jit_disabled": not hasattr(mod.orient2d, "py_func")}
+print(json.dumps(out))
+"""
+
+
+def test_same_results_without_jit():
+    ocases, icases = _near_degenerate_cases()
+    cases = [c + (0.25, -0.5) for c in ocases[:10]] + icases[:10]
+    cases += [
+        (0.0, 0.0, 5e-324, 0.0, 0.0, 5e-324, 1e-323, 1e-323),  # rescaled path
+        (0.0, 0.0, 2.0**600, 2.0**-600, 2.0**601, 2.0**-599, 1.0, 1.0),  # rational path
+        (5.0, 0.0, 0.0, 5.0, -3.0, -4.0, 3.0, nudge(4.0, 1)),
+    ]
+    env = dict(os.environ, NUMBA_DISABLE_JIT="1")
+    proc = subprocess.run(
+        [sys.executable, "-c", _NOJIT_SCRIPT, str(MODULE_PATH)],
+        input=json.dumps(cases), capture_output=True, text=True, env=env, timeout=120,
+    )
+    assert proc.returncode == 0, proc.stderr
+    out = json.loads(proc.stdout)
+    assert out["jit_disabled"]
+    assert out["orient"] == [orient2d(*c[:6]).hex() for c in cases]
+    assert out["incircle"] == [incircle(*c).hex() for c in cases]
+    for c, h in zip(cases, out["incircle"]):
+        assert sign(float.fromhex(h)) == sign(exact_incircle(*c))
