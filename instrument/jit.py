@@ -22,31 +22,44 @@ kernel_inline = njit(cache=True, _nrt=False, inline="always")
 allocating = njit(cache=True)
 
 
-@intrinsic
-def _stack_array(typingctx, size):
-    if not isinstance(size, types.IntegerLiteral):
-        return None
-    n = size.literal_value
-    arrty = types.Array(types.float64, 1, "C")
+def _stack_intrinsic(dtype):
+    """An intrinsic ``f(n)`` returning a 1-D ``dtype`` array of ``n`` (a literal)
+    elements in the calling function's stack frame."""
+    arrty = types.Array(dtype, 1, "C")
 
-    def codegen(context, builder, sig, args):
-        # alloca_once puts the buffer in the function's entry block, so a
-        # call inside a loop does not grow the stack.
-        count = context.get_constant(types.intp, n)
-        ptr = cgutils.alloca_once(builder, context.get_data_type(types.float64), size=count)
-        ary = make_array(arrty)(context, builder)
-        itemsize = context.get_constant(types.intp, 8)
-        populate_array(ary, data=ptr, shape=[count], strides=[itemsize], itemsize=itemsize, meminfo=None)
-        return ary._getvalue()
+    @intrinsic
+    def stack_array(typingctx, size):
+        if not isinstance(size, types.IntegerLiteral):
+            return None
+        n = size.literal_value
 
-    return arrty(size), codegen
+        def codegen(context, builder, sig, args):
+            # alloca_once puts the buffer in the function's entry block, so a
+            # call inside a loop does not grow the stack.
+            count = context.get_constant(types.intp, n)
+            ptr = cgutils.alloca_once(builder, context.get_data_type(dtype), size=count)
+            ary = make_array(arrty)(context, builder)
+            itemsize = context.get_constant(types.intp, context.get_abi_sizeof(context.get_data_type(dtype)))
+            populate_array(ary, data=ptr, shape=[count], strides=[itemsize], itemsize=itemsize, meminfo=None)
+            return ary._getvalue()
+
+        return arrty(size), codegen
+
+    return stack_array
 
 
 if config.DISABLE_JIT:
 
     def scratch(n):
-        """A float64 work array of ``n`` (a literal) elements, uninitialised."""
+        """A float64 work array of ``n`` (a literal) elements, uninitialised.
+
+        Lives in the caller's stack frame: never return it."""
         return np.empty(n)
 
+    def iscratch(n):
+        """Like ``scratch``, for int64."""
+        return np.empty(n, dtype=np.int64)
+
 else:
-    scratch = _stack_array
+    scratch = _stack_intrinsic(types.float64)
+    iscratch = _stack_intrinsic(types.int64)

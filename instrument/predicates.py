@@ -88,6 +88,8 @@ from fractions import Fraction
 import numpy as np
 from numba import njit, objmode
 
+from .jit import iscratch, scratch
+
 __all__ = ["orient2d", "incircle", "orient2d_fast", "incircle_fast"]
 
 # ---------------------------------------------------------------------------
@@ -342,7 +344,7 @@ def _scale_expansion(elen, e, b, h):
 @njit(cache=True)
 def _estimate(elen, e):
     """Floating-point sum of the components, smallest first."""
-    q = e[0]
+    q = float(e[0])
     for i in range(1, elen):
         q += e[i]
     return q
@@ -572,11 +574,11 @@ def _orient2d_adapt(ax, ay, bx, by, cx, cy, detsum):
     det += (acx * bcytail + bcy * acxtail) - (acy * bcxtail + bcx * acytail)
     if det >= errbound or -det >= errbound:
         return det
-    w = np.empty(44)
+    w = scratch(44)
     n = _orient2d_expansion_d(
         acx, acy, bcx, bcy, acxtail, acytail, bcxtail, bcytail, b3, b2, b1, b0, w
     )
-    return w[28 + n - 1]
+    return float(w[28 + n - 1])
 
 
 @njit(cache=True)
@@ -817,7 +819,7 @@ def _incircle_adapt(ax, ay, bx, by, cx, cy, dx, dy, permanent):
     ady = ay - dy
     bdy = by - dy
     cdy = cy - dy
-    w = np.empty(316)
+    w = scratch(316)
     finlen = _incircle_expansion_b(adx, bdx, cdx, ady, bdy, cdy, w)
     det = _estimate(finlen, w[220:316])
     errbound = ICCERRBOUNDB * permanent
@@ -854,10 +856,19 @@ def _incircle_adapt(ax, ay, bx, by, cx, cy, dx, dy, permanent):
     )
     if det >= errbound or -det >= errbound:
         return det
+    # Stage D's work space lives in this frame (kernels may not allocate).
+    fin = scratch(_FIN_SIZE)
+    other = scratch(_FIN_SIZE)
+    t = scratch(256)
+    lifts = scratch(12)
+    xt = scratch(48)
+    xtlen = iscratch(6)
+    small = scratch(20)
     fin, n = _incircle_expansion_d(
-        adx, bdx, cdx, ady, bdy, cdy, adxt, bdxt, cdxt, adyt, bdyt, cdyt, w, finlen
+        adx, bdx, cdx, ady, bdy, cdy, adxt, bdxt, cdxt, adyt, bdyt, cdyt, w, finlen,
+        fin, other, t, lifts.reshape((3, 4)), xt.reshape((6, 8)), xtlen, small,
     )
-    return fin[n - 1]
+    return float(fin[n - 1])
 
 
 @njit(cache=True)
@@ -919,18 +930,17 @@ def _first_order(fin, flen, other, base, tail, two_head, e2, m2, e3, m3, xt, t):
 
 
 @njit(cache=True)
-def _tail_minors(pt, q, p, qt, rt, s, r, st, tct, tctt):
+def _tail_minors(pt, q, p, qt, rt, s, r, st, tct, tctt, u):
     """First- and second-order tail parts of the minor (p+pt)(q+qt) - (r+rt)(s+st).
 
     ``tct`` gets ``pt*q + p*qt - rt*s - r*st`` and ``tctt`` gets ``pt*qt - rt*st``
     (both as expansions); returns their lengths. Both are [0] when all four tails
-    are zero.
+    are zero. ``u`` is work space of 8 elements.
     """
     if pt == 0.0 and qt == 0.0 and rt == 0.0 and st == 0.0:
         tct[0] = 0.0
         tctt[0] = 0.0
         return 1, 1
-    u = np.empty(8)
     i1, i0 = _two_product(pt, q)
     j1, j0 = _two_product(p, qt)
     x3, x2, x1, x0 = _two_two_sum(i1, i0, j1, j0)
@@ -1003,7 +1013,8 @@ def _second_order(
 
 @njit(cache=True)
 def _incircle_expansion_d(
-    adx, bdx, cdx, ady, bdy, cdy, adxt, bdxt, cdxt, adyt, bdyt, cdyt, wb, finlen
+    adx, bdx, cdx, ady, bdy, cdy, adxt, bdxt, cdxt, adyt, bdyt, cdyt, wb, finlen,
+    fin, other, t, lifts, xt, xtlen, small,
 ):
     """Stage D of incircle: add every term that involves a tail.
 
@@ -1022,6 +1033,10 @@ def _incircle_expansion_d(
         Stage B workspace (minors in ``wb[0:12]``, expansion in ``wb[220:]``).
     finlen : int
         Length of the stage B expansion.
+    fin, other, t, lifts, xt, xtlen, small : arrays
+        Work space from the caller, shapes (1152,), (1152,), (256,), (3, 4),
+        (6, 8), int64 (6,) and (20,): nothing here allocates, so that the
+        predicates can run inside kernels compiled without reference counting.
 
     Returns
     -------
@@ -1034,16 +1049,12 @@ def _incircle_expansion_d(
     xts = (adxt, bdxt, cdxt)
     yts = (adyt, bdyt, cdyt)
     minors = wb[0:12].reshape((3, 4))
-    lifts = np.empty((3, 4))
     for i in range(3):
         _lift4(dxs[i], dys[i], lifts[i])
-    fin = np.empty(_FIN_SIZE)
-    other = np.empty(_FIN_SIZE)
     fin[:finlen] = wb[220:220 + finlen]
     flen = finlen
-    t = np.empty(256)
-    xt = np.zeros((6, 8))  # minor * tail, kept for the higher-order terms
-    xtlen = np.zeros(6, dtype=np.int64)
+    xt[:, :] = 0.0  # minor * tail, kept for the higher-order terms
+    xtlen[:] = 0
     for q in range(6):
         i, is_y = q // 2, q % 2
         j, k = (i + 1) % 3, (i + 2) % 3
@@ -1058,14 +1069,15 @@ def _incircle_expansion_d(
             head = dxs[i]
         xtlen[q], fin, other, flen = _first_order(
             fin, flen, other, minors[i], tail, 2.0 * head, e2, m2, e3, m3, xt[q], t)
-    tct = np.empty(8)
-    tctt = np.empty(4)
+    tct = small[0:8]
+    tctt = small[8:12]
+    u = small[12:20]
     for i in range(3):
         if xts[i] == 0.0 and yts[i] == 0.0:
             continue
         j, k = (i + 1) % 3, (i + 2) % 3
         n1, n2 = _tail_minors(xts[j], dys[k], dxs[j], yts[k],
-                              xts[k], dys[j], dxs[k], yts[j], tct, tctt)
+                              xts[k], dys[j], dxs[k], yts[j], tct, tctt, u)
         for is_y in range(2):
             tail = yts[i] if is_y else xts[i]
             if tail == 0.0:

@@ -249,7 +249,7 @@ class LineReader:
     def check_table(self, line: Line, rows: int, columns: int, what: str) -> None:
         """Refuse a declared column count that would fill memory with defaults."""
         cap = max(_MIN_TABLE_CAP, self.size)
-        if rows * columns > cap:
+        if columns > cap or rows * columns > cap:  # even 0 rows: numpy caps the shape
             raise self.error(
                 line,
                 f"at most {cap // max(rows, 1)} {what} for a file of {self.size} bytes",
@@ -297,6 +297,17 @@ class LineReader:
             raise self.error(line, f"{expected} in [{low}, {high}]", found=str(value))
         return value
 
+    def index_field(self, line: Line, index: int, expected: str) -> int:
+        """A required integer of any size (an index or item number the caller checks)."""
+        return self.int_field(line, index, expected, low=_LONG_MIN, high=_LONG_MAX)
+
+    def numbering_base(self, block: Block, what: str, default: int) -> int:
+        """The base set by the first item's number: 0 or 1, else ``default`` (spec §2.1)."""
+        if not len(block):
+            return default
+        number = self.index_field(next(iter(block)), 0, f"the number of the first {what}")
+        return number if number in (0, 1) else default
+
     def real_field(
         self,
         line: Line,
@@ -324,13 +335,20 @@ class LineReader:
             raise self.error(line, f"a finite number for {expected}", found=_show(text))
         return value
 
-    def count_field(self, line: Line, index: int, expected: str, *, default: int | None = None) -> int:
-        """A non-negative count (required unless ``default`` is given)."""
+    def count_field(
+        self, line: Line, index: int, expected: str, *, default: int | None = None
+    ) -> int:
+        """A non-negative count (required unless ``default`` is given).
+
+        Any size is accepted here: ``take`` then reports a count larger than the
+        file as an unexpected end of file.
+        """
         return self.int_field(
             line,
             index,
             expected,
             low=0,
+            high=_LONG_MAX,
             required=default is None,
             default=default or 0,
         )

@@ -80,15 +80,16 @@ def read_with_info(
         return read_area(path), info
     # .edge / .v.edge / .neigh: numbering base from the sibling vertex file if any.
     node = Path(f"{base}.v.node" if kind == "v.edge" else f"{base}.node")
-    nvertices = None
-    first = None
+    nvertices = first = None
     if node.is_file():
-        nvertices = len(read_node(node, default_first_index=default_first_index, info=info)["vertices"])
-        first = info.first_index
+        nodes = Info()
+        vertices = read_node(node, default_first_index=default_first_index, info=nodes)
+        nvertices = len(vertices["vertices"])
+        first = nodes.first_index
     info.files.append(path)
     if kind in ("edge", "v.edge"):
-        return read_edge(path, first_index=first, nvertices=nvertices), info
-    return read_neigh(path, first_index=first), info
+        return read_edge(path, first_index=first, nvertices=nvertices, info=info), info
+    return read_neigh(path, first_index=first, info=info), info
 
 
 def _ele(path: Path, info: Info, nvertices: int) -> dict[str, np.ndarray]:
@@ -172,7 +173,9 @@ def write(
     chosen = _default_kinds(mesh, voronoi) if kinds is None else set(kinds)
     unknown = chosen - set(naming.OUTPUT_KINDS)
     if unknown:
-        raise ValueError(f"unknown output kinds {sorted(unknown)}; choose from {naming.OUTPUT_KINDS}")
+        raise ValueError(
+            f"unknown output kinds {sorted(unknown)}; choose from {naming.OUTPUT_KINDS}"
+        )
     if chosen & {"v.node", "v.edge"} and voronoi is None:
         raise ValueError("writing .v.node/.v.edge needs the voronoi= dict")
     names = naming.output_files(base)

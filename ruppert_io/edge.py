@@ -21,14 +21,15 @@ import numpy as np
 
 from . import _output
 from ._lines import INT32_MAX, INT32_MIN, Block, LineReader
+from .info import Info
 
-_LONG = {"low": -(2**63), "high": 2**63 - 1}
 
 
 def read_edge(
     path: str | os.PathLike[str],
     *,
     first_index: int | None = None,
+    info: Info | None = None,
     nvertices: int | None = None,
 ) -> dict[str, np.ndarray]:
     """Read ``edges`` (E, 2) int32, ``edge_markers`` (E, 1) and ``normals`` (E, 2).
@@ -36,7 +37,7 @@ def read_edge(
     ``first_index`` is the numbering base of the matching .node file; when None it
     is taken from the first edge's number (0 or 1, else 1), since Triangle numbers
     every item of a file set from the same base.  With ``nvertices`` every endpoint
-    must name an existing vertex.
+    must name an existing vertex.  ``info`` (if given) receives the base used.
     """
     r = LineReader.open(path)
     line = r.next("the number of edges")
@@ -44,14 +45,19 @@ def read_edge(
     declared = r.int_field(line, 1, "the number of edge markers", required=False)
     block = r.take(line, count, "edge")
     if first_index is None:
-        first_index = 1
-        if count:
-            number = r.int_field(next(iter(block)), 0, "the number of the first edge", **_LONG)
-            first_index = number if number in (0, 1) else 1
+        first_index = r.numbering_base(block, "edge", 1)
+    if info is not None:
+        info.first_index = first_index
     high = first_index + nvertices - 1 if nvertices is not None else 2**31 - 1
-    fast = _fast_edges(block, bool(declared), first_index, high)
-    if fast is not None:
-        return fast
+    out = _fast_edges(block, bool(declared), first_index, high)
+    return out if out is not None else _slow_edges(r, block, bool(declared), first_index, high)
+
+
+def _slow_edges(
+    r: LineReader, block: Block, declared: bool, first_index: int, high: int
+) -> dict[str, np.ndarray]:
+    """Line by line, with rays and missing markers."""
+    count = len(block)
     edges = np.empty((count, 2), dtype=np.int32)
     normals = np.zeros((count, 2))
     markers = np.zeros((count, 1), dtype=np.int32)
@@ -60,20 +66,22 @@ def read_edge(
         name = f"edge {first_index + i}"
         after = 3  # index of the field after the endpoints
         for j, which in enumerate(("first", "second")):
-            end = r.int_field(line, 1 + j, f"the {which} endpoint of {name}", **_LONG)
+            end = r.index_field(line, 1 + j, f"the {which} endpoint of {name}")
             if j == 1 and end == -1:
                 has_rays = True
                 edges[i, 1] = -1
                 normals[i, 0] = r.real_field(line, 3, f"the ray direction x of {name}")
                 normals[i, 1] = r.real_field(line, 4, f"the ray direction y of {name}")
                 after = 5
-                continue
-            if not first_index <= end <= high:
+            elif first_index <= end <= high:
+                edges[i, j] = end - first_index
+            else:
                 expected = f"a vertex number from {first_index} to {high}"
                 if j == 1:
                     expected += " or -1 (a ray)"
-                raise r.error(line, f"{expected} for the {which} endpoint of {name}", found=str(end))
-            edges[i, j] = end - first_index
+                raise r.error(
+                    line, f"{expected} for the {which} endpoint of {name}", found=str(end)
+                )
         if declared:
             markers[i, 0] = r.int_field(line, after, f"the marker of {name}", required=False)
     out = {"edges": edges}

@@ -19,8 +19,6 @@ import numpy as np
 from . import _output
 from ._lines import Block, LineReader
 
-_LONG = {"low": -(2**63), "high": 2**63 - 1}
-
 
 def read_ele(
     path: str | os.PathLike[str], *, first_index: int = 1, nvertices: int | None = None
@@ -74,7 +72,7 @@ def _slow_ele(
     for i, line in enumerate(block):
         name = f"triangle {first_index + i}"
         for j in range(corners):
-            index = r.int_field(line, 1 + j, f"vertex {j + 1} of {name}", **_LONG)
+            index = r.index_field(line, 1 + j, f"vertex {j + 1} of {name}")
             if not first_index <= index <= high:
                 raise r.error(
                     line,

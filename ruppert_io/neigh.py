@@ -18,53 +18,60 @@ import numpy as np
 
 from . import _output
 from ._lines import LineReader
+from .info import Info
 
-_LONG = {"low": -(2**63), "high": 2**63 - 1}
 
 
 def read_neigh(
     path: str | os.PathLike[str],
     *,
     first_index: int | None = None,
+    info: Info | None = None,
     ntriangles: int | None = None,
 ) -> dict[str, np.ndarray]:
     """Read ``neighbors`` (M, 3) int32, 0-based, -1 for none.
 
     ``first_index`` is the numbering base of the file set; when None it is taken
     from the first triangle's number (0 or 1, else 1).  When ``ntriangles`` is given
-    (the .ele count) the file must list that many triangles.
+    (the .ele count) the file must list that many triangles.  ``info`` (if given)
+    receives the base used.
     """
     r = LineReader.open(path)
     line = r.next("the number of triangles")
     count = r.count_field(line, 0, "the number of triangles")
     if ntriangles is not None and count != ntriangles:
         raise r.error(line, f"{ntriangles} triangles, as in the .ele file", found=str(count))
-    per = r.int_field(line, 1, "the number of neighbours per triangle", required=False, default=3)
+    per = r.int_field(
+        line, 1, "the number of neighbours per triangle", required=False, default=3
+    )
     if per != 3:
         raise r.error(line, "3 neighbours per triangle", found=str(per))
     block = r.take(line, count, "triangle")
     if first_index is None:
-        first_index = 1
-        if count:
-            number = r.int_field(next(iter(block)), 0, "the number of the first triangle", **_LONG)
-            first_index = number if number in (0, 1) else 1
+        first_index = r.numbering_base(block, "triangle", 1)
+    if info is not None:
+        info.first_index = first_index
     values = block.ints(1, 4)
     if values is not None:
         ok = (values == -1) | ((values >= first_index) & (values < first_index + count))
         if ok.all():
-            return {"neighbors": np.where(values == -1, -1, values - first_index).astype(np.int32)}
+            shifted = np.where(values == -1, -1, values - first_index)
+            return {"neighbors": shifted.astype(np.int32)}
     neighbors = np.empty((count, 3), dtype=np.int32)
     for i, line in enumerate(block):
         name = f"triangle {first_index + i}"
         for j in range(3):
-            value = r.int_field(line, 1 + j, f"neighbour {j + 1} of {name}", **_LONG)
+            value = r.index_field(line, 1 + j, f"neighbour {j + 1} of {name}")
             if value == -1:
                 neighbors[i, j] = -1
             elif first_index <= value < first_index + count:
                 neighbors[i, j] = value - first_index
             else:
-                expected = f"-1 or a triangle number from {first_index} to {first_index + count - 1}"
-                raise r.error(line, f"{expected} for neighbour {j + 1} of {name}", found=str(value))
+                last = first_index + count - 1
+                expected = f"-1 or a triangle number from {first_index} to {last}"
+                raise r.error(
+                    line, f"{expected} for neighbour {j + 1} of {name}", found=str(value)
+                )
     return {"neighbors": neighbors}
 
 

@@ -22,7 +22,6 @@ from ._lines import INT32_MAX, INT32_MIN, Block, Line, LineReader
 from .errors import DimensionError
 from .info import Info
 
-_ANY_INT = {"low": -(2**63), "high": 2**63 - 1}
 
 
 @dataclass(frozen=True)
@@ -71,11 +70,7 @@ def read_vertices(
     n, k = header.count, header.attributes
     r.check_table(header.line, n, k, "vertex attributes")
     block = r.take(header.line, n, "vertex")
-    first = default_first_index
-    if n:
-        number = r.int_field(next(iter(block)), 0, "the number of the first vertex", **_ANY_INT)
-        if number in (0, 1):
-            first = number
+    first = r.numbering_base(block, "vertex", default_first_index)
     columns = _fast_vertices(block, k, bool(header.markers))
     if columns is None:
         columns = _slow_vertices(r, block, k, bool(header.markers), first)
@@ -120,7 +115,9 @@ def _slow_vertices(
                 line, 3 + j, f"attribute {j + 1} of {name}", required=False
             )
         if markers:
-            marks[i, 0] = r.int_field(line, 3 + k, f"the boundary marker of {name}", required=False)
+            marks[i, 0] = r.int_field(
+                line, 3 + k, f"the boundary marker of {name}", required=False
+            )
     return xy, attributes, marks
 
 

@@ -30,9 +30,6 @@ from .errors import FormatError
 from .info import Info
 from .node import check_dimension, read_node, read_vertex_header, read_vertices, vertex_chunks
 
-# Endpoints may hold any value: out-of-range ones only cause a warning.
-_LONG = {"low": -(2**63), "high": 2**63 - 1}
-
 
 def read_poly(
     path: str | os.PathLike[str],
@@ -126,7 +123,7 @@ def _slow_segments(
     for i, line in enumerate(block):
         number = first + i
         ends = [
-            r.int_field(line, j, f"the {name} endpoint of segment {number}", **_LONG)
+            r.index_field(line, j, f"the {name} endpoint of segment {number}")
             for j, name in ((1, "first"), (2, "second"))
         ]
         marker = 0

@@ -44,7 +44,7 @@ def exact_incircle(ax, ay, bx, by, cx, cy, dx, dy) -> Fraction:
 
 
 def sign(x) -> int:
-    return (x > 0) - (x < 0)
+    return int(x > 0) - int(x < 0)
 
 
 def check_orient(*c):
@@ -266,6 +266,25 @@ def test_underflow_and_overflow_inputs():
     check_incircle(big, 0.0, 0.0, big, -big, 0.0, 0.0, nudge(-big, 1))
 
 
+def test_rescaled_values_keep_magnitude_and_saturate():
+    assert orient2d(0.0, 0.0, 0.0, 0.0, 0.0, 0.0) == 0
+    assert incircle(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0) == 0
+    s = 2.0**-500  # products underflow the fast path's guard; exact after rescaling
+    assert orient2d(0.0, 0.0, s, 0.0, 0.0, s) == 2.0**-1000
+    assert orient2d(0.0, 0.0, 3 * s, s, s, 2 * s) == 5 * 2.0**-1000
+    # the true values are out of the double range: saturate, never lose the sign
+    big, small = 2.0**600, 2.0**-600
+    assert orient2d(0.0, 0.0, big, 0.0, 0.0, big) == 1.7976931348623157e308
+    assert orient2d(0.0, 0.0, small, 0.0, 0.0, small) == 5e-324
+    assert orient2d(0.0, 0.0, 0.0, small, small, 0.0) == -5e-324
+    assert incircle(small, 0.0, 0.0, small, -small, 0.0, 0.0, 0.0) == 5e-324
+    assert incircle(big, 0.0, 0.0, big, -big, 0.0, 0.0, 0.0) == 1.7976931348623157e308
+    # same through the rational fallback (coordinates span 2^2000)
+    assert orient2d(0.0, 0.0, 1e300, 1e-300, -1e-300, 1e300) == 1.7976931348623157e308
+    assert orient2d(0.0, 0.0, -1e-300, 1e300, 1e300, 1e-300) == -1.7976931348623157e308
+    assert orient2d(0.0, 0.0, 1e-300, 0.0, 1e300, 1e-300) == 5e-324
+
+
 def test_mixed_magnitudes_use_exact_fallback():
     big, small = 2.0**600, 2.0**-600
     # exactly collinear although the coordinates span 2^1201
@@ -328,15 +347,15 @@ def test_stage_d_expansions_are_exact():
         n = P._orient2d_expansion_d(acx, acy, bcx, bcy, acxt, acyt, bcxt, bcyt, *b, w)
         _assert_expansion(w[28:28 + n], exact_orient(*c[:6]))
         # incircle: differences against d
-        d = (c[6], c[7]) * 3
         coords = (c[0], c[2], c[4], c[1], c[3], c[5])
         ref = (c[6], c[6], c[6], c[7], c[7], c[7])
         heads, tails = _heads_tails(coords, ref)
         wb = np.zeros(316)
         nb = P._incircle_expansion_b(*heads, wb)
-        fin, m = P._incircle_expansion_d(*heads, *tails, wb, nb)
+        fin, m = P._incircle_expansion_d(
+            *heads, *tails, wb, nb, np.empty(1152), np.empty(1152), np.empty(256),
+            np.empty((3, 4)), np.empty((6, 8)), np.empty(6, dtype=np.int64), np.empty(20))
         _assert_expansion(fin[:m], exact_incircle(*c))
-        assert d  # (silence linters)
 
 
 def test_adaptive_stages_match_oracle_when_forced():
@@ -391,10 +410,9 @@ def test_hypothesis_near_cocircular(x0, y0, r, angles, ux, uy, k):
 # Pure Python (NUMBA_DISABLE_JIT=1) gives the same values as the compiled code
 # ---------------------------------------------------------------------------
 _NOJIT_SCRIPT = r"""
-import importlib.util, json, sys
-spec = importlib.util.spec_from_file_location("predicates_nojit", sys.argv[1])
-mod = importlib.util.module_from_spec(spec)
-spec.loader.exec_module(mod)
+import json, sys
+sys.path.insert(0, sys.argv[1])
+from instrument import predicates as mod
 cases = json.loads(sys.stdin.read())
 out = {"orient": [mod.orient2d(*c[:6]).hex() for c in cases],
        "incircle": [mod.incircle(*c).hex() for c in cases],
@@ -413,7 +431,7 @@ def test_same_results_without_jit():
     ]
     env = dict(os.environ, NUMBA_DISABLE_JIT="1")
     proc = subprocess.run(
-        [sys.executable, "-c", _NOJIT_SCRIPT, str(MODULE_PATH)],
+        [sys.executable, "-c", _NOJIT_SCRIPT, str(MODULE_PATH.parents[1])],
         input=json.dumps(cases), capture_output=True, text=True, env=env, timeout=120,
     )
     assert proc.returncode == 0, proc.stderr
@@ -423,3 +441,26 @@ def test_same_results_without_jit():
     assert out["incircle"] == [incircle(*c).hex() for c in cases]
     for c, h in zip(cases, out["incircle"]):
         assert sign(float.fromhex(h)) == sign(exact_incircle(*c))
+
+
+def test_predicates_run_inside_kernels_without_reference_counting():
+    """The engine's kernels are compiled with _nrt=False; every stage of the
+    predicates (including the exact expansions) must work there."""
+    from instrument.jit import kernel
+
+    @kernel
+    def signs(pts, out):
+        for i in range(pts.shape[0]):
+            p = pts[i]
+            out[i, 0] = orient2d(p[0], p[1], p[2], p[3], p[4], p[5])
+            out[i, 1] = incircle(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7])
+
+    rng = np.random.default_rng(11)
+    base = rng.integers(-3, 4, size=(400, 8)).astype(float)  # many exact degeneracies
+    tiny = base + rng.integers(-2, 3, size=base.shape) * 2.0**-50  # forces stages B-D
+    pts = np.vstack([base, tiny, np.ldexp(tiny, 600), np.ldexp(tiny, -600)])
+    out = np.zeros((pts.shape[0], 2))
+    signs(pts, out)
+    for p, (o, c) in zip(pts, out):
+        assert sign(o) == sign(exact_orient(*p[:6]))
+        assert sign(c) == sign(exact_incircle(*p))

@@ -9,7 +9,7 @@ import triangle
 import vtk
 from vtk.util.numpy_support import vtk_to_numpy
 
-from conftest import PKG_DATA, assert_same_mesh
+from iohelpers import PKG_DATA, assert_same_mesh
 
 import ruppert_io
 from ruppert_io.meshio_plugin import TRIANGLE6_TO_VTK, VTK_TO_TRIANGLE6
@@ -36,7 +36,8 @@ def test_meshio_reads_a_triangle_node_with_its_ele():
     assert len(m.cells_dict["line"]) == 29  # the segments of A.1.poly
     assert m.point_data["triangle:marker"].shape == (29,)
     assert m.point_data["triangle:attr1"].shape == (29,)
-    assert np.array_equal(m.cells_dict["triangle"], ruppert_io.read(PKG_DATA / "A.1.ele")["triangles"])
+    expected = ruppert_io.read(PKG_DATA / "A.1.ele")["triangles"]
+    assert np.array_equal(m.cells_dict["triangle"], expected)
 
 
 def test_meshio_still_reads_tetgen_files(tmp_path, capsys):
@@ -75,11 +76,13 @@ def test_o2_node_order(a_o2):
     assert np.allclose(p[t6[:, 3]], mid(0, 1))
     assert np.allclose(p[t6[:, 4]], mid(1, 2))
     assert np.allclose(p[t6[:, 5]], mid(2, 0))
-    assert np.array_equal(np.asarray(a_o2["triangles"])[:, TRIANGLE6_TO_VTK][:, VTK_TO_TRIANGLE6], a_o2["triangles"])
+    t6 = a_o2["triangles"]
+    assert np.array_equal(t6[:, TRIANGLE6_TO_VTK][:, VTK_TO_TRIANGLE6], t6)
 
 
 def test_round_trip_through_meshio(a_o2):
-    mesh = {k: a_o2[k] for k in ("vertices", "vertex_markers", "vertex_attributes", "triangles", "segments", "segment_markers")}
+    keys = ("vertices", "vertex_markers", "vertex_attributes", "triangles", "segments")
+    mesh = {k: a_o2[k] for k in (*keys, "segment_markers")}
     mesh["triangle_attributes"] = np.arange(2 * len(mesh["triangles"]), dtype=float).reshape(-1, 2)
     mesh["triangle_max_area"] = np.full((len(mesh["triangles"]), 1), 0.5)
     for pad in (False, True):
@@ -112,8 +115,11 @@ def test_vtu_is_read_by_vtk(tmp_path, order):
     # Cells: the triangles, then the segments, with VTK's types and node order.
     types = [grid.GetCellType(i) for i in range(grid.GetNumberOfCells())]
     tri_type = vtk.VTK_TRIANGLE if order == "pq30" else vtk.VTK_QUADRATIC_TRIANGLE
-    assert types.tolist() == [tri_type] * m + [vtk.VTK_LINE] * s
-    cells = [[grid.GetCell(i).GetPointId(j) for j in range(grid.GetCell(i).GetNumberOfPoints())] for i in range(m + s)]
+    assert types == [tri_type] * m + [vtk.VTK_LINE] * s
+    cells = []
+    for i in range(m + s):
+        cell = grid.GetCell(i)
+        cells.append([cell.GetPointId(j) for j in range(cell.GetNumberOfPoints())])
     expected_tris = t["triangles"][:, TRIANGLE6_TO_VTK] if order == "pq30o2" else t["triangles"]
     assert cells[:m] == expected_tris.tolist()
     assert cells[m:] == t["segments"].tolist()

@@ -8,10 +8,13 @@ import numpy as np
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from conftest import PKG_DATA, assert_same_mesh
+from iohelpers import PKG_DATA, assert_same_mesh
 
 import ruppert_io
 from ruppert_io import FormatError
+
+# Each example cleans the directory it uses, so sharing tmp_path is safe.
+TMP_PATH_OK = [HealthCheck.function_scoped_fixture]
 
 finite = st.floats(allow_nan=False, allow_infinity=False, width=64)
 int32 = st.integers(-(2**31), 2**31 - 1)
@@ -74,7 +77,7 @@ def meshes(draw):
     return mesh
 
 
-@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@settings(max_examples=150, deadline=None, suppress_health_check=TMP_PATH_OK)
 @given(mesh=meshes(), first=st.sampled_from([0, 1]))
 def test_random_meshes_round_trip_bit_exactly(tmp_path, mesh, first):
     base = tmp_path / "r"
@@ -105,7 +108,7 @@ SIBLINGS = ["A.1.node", "A.1.ele", "A.1.poly", "bbox.1.node", "bbox.1.ele",
 
 tokens = st.sampled_from(
     [b"#", b"\0", b"\n", b"\r", b" ", b"\t", b"-", b".", b"0", b"010", b"0x", b"-inf", b"+nan",
-     b"1e999", b"99999999999999999999", b"-1", b"1000000000000", b"\xff\xfe", b"e", b","]
+     b"1e999", b"99999999999999999999", b"9223372036854775807", b"2147483648", b"-1", b"1000000000000", b"\xff\xfe", b"e", b","]
 )
 
 
@@ -129,7 +132,7 @@ def mutations(draw):
     return name, bytes(data)
 
 
-@settings(max_examples=400, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@settings(max_examples=400, deadline=None, suppress_health_check=TMP_PATH_OK)
 @given(case=mutations())
 def test_mutated_files_parse_or_raise_format_error(tmp_path, case):
     name, data = case

@@ -37,17 +37,15 @@ def test_extra_columns_are_ignored(write_file):
 
 
 @pytest.mark.parametrize(
-    "first, base, expected_first_triangle",
-    [("0", 0, [0, 1, 2]), ("1", 1, [0, 1, 2]), ("7", 1, [0, 1, 2])],
+    "first, base", [("0", 0), ("1", 1), ("7", 1), ("0x0", 0), ("-0", 0), ("1.9", 1)]
 )
-def test_numbering_base_comes_from_the_first_vertex(
-    write_file, tmp_path, first, base, expected_first_triangle
-):
+def test_numbering_base_comes_from_the_first_vertex(write_file, tmp_path, first, base):
+    # Later vertex numbers are ignored; the base applies to every index.
     write_file("t.node", f"3 2 0 0\n{first} 0 0\n9 1 0\n9 0 1\n")
-    write_file("t.ele", f"1 3 0\n5 {base} {base + 1} {base + 2}\n")
+    write_file("t.ele", f"1 3 0\n5 {base + 2} {base} {base + 1}\n")
     d, info = read_with_info(tmp_path / "t")
     assert info.first_index == base
-    assert d["triangles"].tolist() == [expected_first_triangle]
+    assert d["triangles"].tolist() == [[2, 0, 1]]
 
 
 def test_default_first_index_applies_to_other_first_numbers(write_file):
@@ -69,10 +67,11 @@ def test_octal_counts_like_strtol(write_file):
         ("3 2 0 0\n1 0 0\n2 1\n3 0 1\n", 3, "expected the y coordinate of vertex 2"),
         ("3 2 0 0\n1 0 0\n2\n3 0 1\n", 3, "expected the x coordinate of vertex 2"),
         ("3 2 0 0\n1 0 0\n2 1 0\n", 4, "unexpected end of file; expected 3 vertex lines"),
+        ("1000000000000 2 0 0\n1 0 0\n", 3, "unexpected end of file; expected 1000000000000"),
         ("-3 2 0 0\n", 1, "expected the number of vertices in [0, "),
         ("3 2 -1 0\n", 1, "expected the number of vertex attributes in [0, "),
-        ("3 2 0 0\n1 0 0\n2 -inf 0\n3 0 1\n", 3, "a finite number for the x coordinate of vertex 2"),
-        ("3 2 0 0\n1 0 0\n2 1 +nan\n3 0 1\n", 3, "a finite number for the y coordinate of vertex 2"),
+        ("3 2 0 0\n1 0 0\n2 -inf 0\n3 0 1\n", 3, "a finite number for the x coordinate"),
+        ("3 2 0 0\n1 0 0\n2 1 +nan\n3 0 1\n", 3, "a finite number for the y coordinate"),
         ("3 2 0 1\n1 0 0 99999999999\n2 1 0\n3 0 1\n", 2, "the boundary marker of vertex 1 in"),
         ("", 1, "unexpected end of file; expected the number of vertices"),
     ],
@@ -94,9 +93,20 @@ def test_three_d_is_a_dimension_error(write_file):
     assert "Triangle only works with two-dimensional meshes" in str(e.value)
 
 
-def test_huge_attribute_count_fails_without_allocating(write_file):
-    with pytest.raises(FormatError, match="vertex attributes"):
-        read(write_file("h.node", "3 2 1000000000 0\n1 0 0\n2 1 0\n3 0 1\n"))
+@pytest.mark.parametrize(
+    "name, text",
+    [
+        ("h.node", "3 2 1000000000 0\n1 0 0\n2 1 0\n3 0 1\n"),
+        ("z.node", "0 2 9223372036854775807 0\n"),  # even with no rows
+        ("z.ele", "0 3 9223372036854775807\n"),
+        ("c.ele", "0 2147483647 0\n"),
+    ],
+)
+def test_huge_column_counts_fail_without_allocating(write_file, name, text):
+    write_file("z.node", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n")
+    write_file("c.node", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n")
+    with pytest.raises(FormatError, match="at most .* (attributes|nodes per triangle)"):
+        read(write_file(name, text))
 
 
 POLY = """# a square with a hole and two regions
@@ -177,7 +187,7 @@ def test_poly_with_zero_vertices_and_no_node_file(write_file):
         ("1 0\n1 1\n0\n", 7, "expected the second endpoint of segment 1"),
         ("0 0\n", 7, "unexpected end of file; expected the number of holes"),
         ("0 0\n1\n1 0.5\n", 8, "expected the y coordinate of hole 1"),
-        ("0 0\n0\n1\n1 0.5 0.5\n", 9, "expected the regional attribute or area constraint of region 1"),
+        ("0 0\n0\n1\n1 0.5 0.5\n", 9, "the regional attribute or area constraint of region 1"),
         ("0 0\n0\n2\n1 0.5 0.5 1\n", 10, "unexpected end of file; expected 2 region lines"),
         ("0 0\n-1\n", 7, "expected the number of holes in [0, "),
     ],
@@ -204,7 +214,10 @@ def test_ele_reads_its_node_and_six_node_triangles(write_file):
     [
         ("1 2 0\n1 1 2\n", "Triangles in .* must have at least 3 vertices"),
         ("1 3 0\n1 1 2\n", "expected vertex 3 of triangle 1$"),
-        ("1 3 0\n1 1 2 5\n", "Triangle 1 has an invalid vertex index; expected a vertex number from 1 to 4, found 5"),
+        (
+            "1 3 0\n1 1 2 5\n",
+            "Triangle 1 has an invalid vertex index; expected a vertex number from 1 to 4, found 5",
+        ),
         ("1 3 0\n1 0 1 2\n", "found 0"),
         ("2 3 0\n1 1 2 3\n", "unexpected end of file"),
         ("1 3 1\n1 1 2 3 -nan\n", "a finite number for attribute 1 of triangle 1, found '-nan'"),
@@ -231,7 +244,8 @@ def test_area_missing_value_and_count_mismatch(write_file, tmp_path):
     with pytest.raises(FormatError, match="a.ele and .*a.area disagree on number of triangles"):
         read(tmp_path / "a")
     # Alone, the .area is read without the check.
-    assert read(write_file("a.area", "2\n1 0.5\n2 -1\n"))["triangle_max_area"].tolist() == [[0.5], [-1.0]]
+    areas = read(write_file("a.area", "2\n1 0.5\n2 -1\n"))["triangle_max_area"]
+    assert areas.tolist() == [[0.5], [-1.0]]
 
 
 def test_edge_file_with_markers(write_file):
@@ -248,7 +262,8 @@ def test_edge_file_with_markers(write_file):
 def test_voronoi_edge_rays(write_file):
     # Triangle's sample for the triangle (0,0), (1,0), (0,1), 0-based (spec §2.8).
     write_file("tri0.1.v.node", "1  2  0  0\n   0    0.5  0.5\n")
-    path = write_file("tri0.1.v.edge", "3  0\n   0   0  -1   0  -1\n   1   0  -1   1  1\n   2   0  -1   -1  0\n")
+    edges = "3  0\n   0   0  -1   0  -1\n   1   0  -1   1  1\n   2   0  -1   -1  0\n"
+    path = write_file("tri0.1.v.edge", edges)
     d = read(path)
     assert d["edges"].tolist() == [[0, -1]] * 3
     assert d["normals"].tolist() == [[0, -1], [1, 1], [-1, 0]]
@@ -259,14 +274,15 @@ def test_lone_edge_and_neigh_take_their_own_base(write_file):
     d = read(write_file("x.edge", "2 0\n1 1 2\n2 2 3\n"))
     assert d["edges"].tolist() == [[0, 1], [1, 2]]
     d = read(write_file("x.neigh", "2 3\n0 1 -1 -1\n1 -1 0 -1\n"))
-    assert d["neighbors"].dtype == np.int32 and d["neighbors"].tolist() == [[1, -1, -1], [-1, 0, -1]]
+    assert d["neighbors"].dtype == np.int32
+    assert d["neighbors"].tolist() == [[1, -1, -1], [-1, 0, -1]]
 
 
 @pytest.mark.parametrize(
     "text, message",
     [
         ("1 4\n1 -1 -1 -1\n", "expected 3 neighbours per triangle, found 4"),
-        ("1 3\n1 2 -1 -1\n", "-1 or a triangle number from 1 to 1 for neighbour 1 of triangle 1, found 2"),
+        ("1 3\n1 2 -1 -1\n", "-1 or a triangle number from 1 to 1 for neighbour 1 of triangle 1"),
         ("1 3\n1 -1 -1\n", "expected neighbour 3 of triangle 1$"),
     ],
 )
@@ -303,3 +319,10 @@ def test_public_names():
     assert issubclass(ruppert_io.FormatError, ValueError)
     for name in ("read", "write", "FormatError", "to_meshio", "from_meshio", "read_with_info"):
         assert hasattr(ruppert_io, name)
+
+
+def test_info_reports_the_base_of_a_lone_index_file(write_file):
+    assert read_with_info(write_file("y.neigh", "1 3\n0 -1 -1 -1\n"))[1].first_index == 0
+    write_file("w.node", "3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n")
+    d, info = read_with_info(write_file("w.edge", "1 0\n7 0 2\n"))
+    assert info.first_index == 0 and d["edges"].tolist() == [[0, 2]]

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 import triangle
 
-from conftest import CORPUS, PKG_DATA, assert_same_mesh, corpus_reference, pkg_files
+from iohelpers import CORPUS, PKG_DATA, assert_same_mesh, corpus_reference, pkg_files
 
 import ruppert_io
 from ruppert_io import FormatError, naming
@@ -67,7 +67,8 @@ def test_corpus_quirks():
     for name in ("Kristianped__Triangle__test.poly", "mr-jstar__jfem__y.poly"):
         assert ruppert_io.read_with_info(CORPUS / name)[1].first_index == 0
     # "105 2": any nonzero segment-marker count means one marker column.
-    d, info = ruppert_io.read_with_info(CORPUS / "tnakaicode__jburkardt-data__airfoil_exterior.poly")
+    airfoil = CORPUS / "tnakaicode__jburkardt-data__airfoil_exterior.poly"
+    d, info = ruppert_io.read_with_info(airfoil)
     assert info.segment_markers == 2 and d["segment_markers"].shape == (105, 1)
     # Region lines with one value use it as attribute and area (cheekujodhpur: 128 such).
     regions = ruppert_io.read(CORPUS / "cheekujodhpur__2dgrpt__input.poly")["regions"]
@@ -81,9 +82,18 @@ def test_corpus_quirks():
 # (regions misparsed, empty holes omitted, no .edge without rays, .neigh keys).
 PKG_BASES = sorted({naming.split_kind(p.name)[0] for p in pkg_files() if ".v." not in p.name})
 LOADER_KEYS = (
-    "vertices", "vertex_attributes", "vertex_markers", "segments", "segment_markers",
-    "triangles", "triangle_attributes", "triangle_max_area",
+    "vertices",
+    "vertex_attributes",
+    "vertex_markers",
+    "segments",
+    "segment_markers",
+    "triangles",
+    "triangle_attributes",
+    "triangle_max_area",
 )
+
+
+INT_KEYS = ("segments", "triangles", "edges", "neighbors")
 
 
 @pytest.mark.parametrize("path", pkg_files(), ids=lambda p: p.name)
@@ -91,7 +101,8 @@ def test_package_data_reads(path):
     d = ruppert_io.read(path)
     assert d, path
     for key, value in d.items():
-        assert value.dtype == (np.int32 if key in ("segments", "triangles", "edges", "neighbors") or key.endswith("markers") else np.float64)
+        is_int = key in INT_KEYS or key.endswith("markers")
+        assert value.dtype == (np.int32 if is_int else np.float64), key
         assert value.ndim == 2
 
 
@@ -120,10 +131,7 @@ ROUND_TRIP = [(PKG_DATA, b) for b in PKG_BASES] + [
 
 @pytest.mark.parametrize("folder, base", ROUND_TRIP, ids=[b for _, b in ROUND_TRIP])
 def test_round_trip_and_triangle_load(folder, base, tmp_path):
-    source = folder / base
-    if not any(source.with_name(f"{base}.{k}").exists() for k in ("node", "poly")):
-        pytest.fail(f"{base} has no .node or .poly")
-    original = ruppert_io.read(source)
+    original = ruppert_io.read(folder / base)
     for first in (0, 1):
         out = tmp_path / f"out{first}"
         paths = ruppert_io.write(out, original, first_index=first, generated_by="pytest")
@@ -152,7 +160,9 @@ def test_triangle_outputs_are_reproduced_byte_for_byte(path, tmp_path):
     out = tmp_path / "copy"
     if kind in ("v.node", "v.edge"):
         vor = {**ruppert_io.read(base + ".v.node"), **ruppert_io.read(base + ".v.edge")}
-        [written] = ruppert_io.write(out, {}, kinds=[kind], voronoi=vor, generated_by=_generated_by(path))
+        [written] = ruppert_io.write(
+            out, {}, kinds=[kind], voronoi=vor, generated_by=_generated_by(path)
+        )
     else:
         mesh = ruppert_io.read(base)
         kinds = ["node", kind] if kind == "poly" else [kind]
