@@ -107,7 +107,7 @@ def _scalar_ints(*vals):
 
 
 def _sign(x) -> int:
-    return (x > 0) - (x < 0)
+    return int(x > 0) - int(x < 0)
 
 
 def orient_exact(a, b, c) -> int:
@@ -708,7 +708,7 @@ def _on_line(u, v, x) -> bool:
 
 
 class _Chains:
-    """Input segments as chains (J0, J1, interior output vertices)."""
+    """Segments as chains (J0, J1, interior output vertices)."""
 
     def __init__(self):
         self.chains: list[tuple[int, int, list[int]]] = []
@@ -724,10 +724,10 @@ def _subseg_adjacency(m: _Mesh):
     return adj
 
 
-def _pslg_chains(m: _Mesh, pslg, probs: _Problems, chains: _Chains):
+def _pslg_chains(m: _Mesh, pslg, probs: _Problems):
+    """Every input segment must be a chain of collinear output subsegments."""
     iv = np.asarray(pslg.get("vertices", np.zeros((0, 2))), dtype=np.float64).reshape(-1, 2)
     iseg = _int_array(pslg.get("segments", np.zeros((0, 2))), 2).reshape(-1, 2)
-    chains.input_points = {(float(x), float(y)) for x, y in iv.tolist()}
     if m.M == 0 or not len(iseg):
         return
     adj = _subseg_adjacency(m)
@@ -782,18 +782,25 @@ def _pslg_chains(m: _Mesh, pslg, probs: _Problems, chains: _Chains):
                 f"collinear subsegments (stopped at output vertex {cur} at {cpt})"
             )
             continue
-        chains.chains.append((start, cur, path))
     probs.add("input segments missing", msgs)
 
 
 def _output_chains(m: _Mesh, chains: _Chains):
-    """Chains derived from the output subsegments alone (no PSLG given)."""
+    """Segments as maximal straight chains of output subsegments.
+
+    A chain passes through a vertex with exactly two subsegments that are
+    collinear (see ON_SEGMENT_RTOL) and opposite, unless the vertex is an input
+    vertex (when the input points are known).
+    """
     adj = _subseg_adjacency(m)
-    V = m.V
+    Vl = m.V.tolist()
+    inp = chains.input_points
     through = set()
     for w, nb in adj.items():
+        if inp is not None and tuple(Vl[w]) in inp:
+            continue
         if len(nb) == 2 and nb[0] != nb[1]:
-            a, b, p = tuple(V[nb[0]]), tuple(V[nb[1]]), tuple(V[w])
+            a, b, p = tuple(Vl[nb[0]]), tuple(Vl[nb[1]]), tuple(Vl[w])
             if _on_line(a, b, p) and _dot_sign_scalar(p, a, p, b) < 0:
                 through.add(w)
     done = set()
@@ -830,8 +837,8 @@ def _angles(P):
     return out
 
 
-def _wedges(m: _Mesh, chains: _Chains):
-    """Small wedges: apex id -> list of (start direction, angle) in degrees."""
+def _wedges(m: _Mesh, chains: _Chains, limit: float):
+    """Small wedges (angle < limit): apex id -> [(start direction, angle)] in degrees."""
     rays = defaultdict(list)
     V = m.V
     for j0, j1, path in chains.chains:
@@ -848,7 +855,7 @@ def _wedges(m: _Mesh, chains: _Chains):
         w = []
         for k, a in enumerate(d):
             gap = (d[(k + 1) % len(d)] - a) % 360.0
-            if gap < SMALL_INPUT_ANGLE:
+            if gap < limit:
                 w.append((a, gap))
         if w:
             out[j] = w
@@ -863,7 +870,8 @@ def _rel_angle(x, start):
 def _exempt(m: _Mesh, t: int, ang, chains: _Chains, wedges, mpw, subsegs) -> bool:
     tri = m.Tc[t].tolist()
     P = m.P[t]
-    # (a) the smallest angle is at an apex J inside a wedge of angle < 60 deg.
+    # (a) the smallest angle is at a corner J inside a wedge at J narrower than
+    # both 60 degrees and the bound: every triangle there has a bad angle at J.
     i = int(np.argmin(ang))
     j = tri[i]
     if j in wedges:
@@ -908,7 +916,7 @@ def _mpw_table(m: _Mesh, chains: _Chains):
     return table
 
 
-def _quality(m: _Mesh, pslg, min_angle, probs: _Problems | None, chains=None):
+def _quality(m: _Mesh, pslg, min_angle, probs: _Problems | None):
     """Angles of the good triangles; bad and exempt triangle indices."""
     idx = np.flatnonzero(m.good)
     ang = _angles(m.P[idx]) if idx.size else np.zeros((0, 3))
@@ -918,13 +926,12 @@ def _quality(m: _Mesh, pslg, min_angle, probs: _Problems | None, chains=None):
         badpos = np.flatnonzero(mins < min_angle * (1.0 - ANGLE_RTOL))
         if badpos.size:
             sink = probs if probs is not None else _Problems()
-            if chains is None:
-                chains = _Chains()
-                if pslg is not None and len(np.asarray(pslg.get("segments", []))):
-                    _pslg_chains(m, pslg, _Problems(), chains)
-                elif len(m.S):
-                    _output_chains(m, chains)
-            wedges = _wedges(m, chains)
+            chains = _Chains()
+            if pslg is not None:
+                iv = np.asarray(pslg.get("vertices", np.zeros((0, 2))), dtype=np.float64)
+                chains.input_points = {(float(x), float(y)) for x, y in iv.reshape(-1, 2).tolist()}
+            _output_chains(m, chains)
+            wedges = _wedges(m, chains, min(SMALL_INPUT_ANGLE, min_angle))
             mpw = _mpw_table(m, chains)
             ok, _ = _segment_keys(m)
             subsegs = {(min(a, b), max(a, b)) for a, b in m.S[ok].tolist()}
@@ -1030,12 +1037,10 @@ def check_mesh(result, pslg=None, min_angle=None, *, delaunay=True, max_area=Non
     _check_segments(m, e, probs)
     if delaunay:
         _check_delaunay(m, e, probs)
-    chains = None
-    if pslg is not None and len(np.asarray(pslg.get("segments", []))):
-        chains = _Chains()
-        _pslg_chains(m, pslg, probs, chains)
+    if pslg is not None:
+        _pslg_chains(m, pslg, probs)
     if min_angle is not None:
-        _quality(m, pslg, min_angle, probs, chains)
+        _quality(m, pslg, min_angle, probs)
     if max_area is not None:
         _check_area(m, max_area, probs)
     if markers:
@@ -1049,9 +1054,11 @@ def quality_report(result, pslg=None, min_angle=None) -> dict:
     n_bad     triangles whose smallest angle is below min_angle (relative
               tolerance 1e-9), exempt ones included;
     n_exempt  those of them explained by a small input angle:
-      (a) the smallest angle is at a corner J, J is the apex of a wedge of
-          angle < SMALL_INPUT_ANGLE (60 degrees) between two angularly
-          consecutive segments at J, and the triangle lies inside that wedge;
+      (a) the smallest angle is at a corner J, J is the apex of a wedge
+          between two angularly consecutive segments at J whose angle is
+          below both SMALL_INPUT_ANGLE (60 degrees) and min_angle (so every
+          triangle at J inside it has a bad angle at J), and the triangle
+          lies inside that wedge;
       (b) Miller-Pav-Walkington (reference 4.8.4): an edge of minimum length
           (relative 1e-12) that is not a subsegment joins two Steiner
           points lying on two different segments that share an endpoint J,

@@ -1,6 +1,6 @@
 """``triangulate``: validate the input dict, run the pipeline, build the Result.
 
-Pipeline: Delaunay triangulation -> (segments, holes, regions: issue 4)
+Pipeline: Delaunay triangulation -> segment recovery, holes, regions (``p``)
 -> (quality refinement: issue 5) -> output arrays.
 """
 
@@ -9,9 +9,9 @@ from __future__ import annotations
 import numpy as np
 
 from . import counters
-from .delaunay import delaunay
-from .output import Result, _col, _put, edge_ends, hull_edges, unique_edges
-from .mesh import NO_EDGE, live_triangles
+from .mesh import NO_EDGE, NO_SEG, S_NVERT, live_triangles
+from .output import Result, _col, _put, edge_ends, unique_edges
+from .pslg import Mesher, carve, clean_segments, enclose_hull, recover_segments, start
 from .switches import Options, parse
 
 INPUT_KEYS = frozenset(
@@ -33,39 +33,56 @@ INPUT_KEYS = frozenset(
 )
 
 
-def _float2(tri: dict, key: str, cols: int | None = None) -> np.ndarray | None:
-    if key not in tri or tri[key] is None:
+def _rows(tri: dict, key: str, cols: int, dtype) -> np.ndarray | None:
+    if tri.get(key) is None:
         return None
-    a = np.asarray(tri[key], dtype=np.float64)
-    if a.ndim == 1:
-        a = a.reshape(-1, 1) if cols is None else a.reshape(-1, cols)
+    a = np.asarray(tri[key], dtype=dtype)
+    if a.size == 0:
+        return np.zeros((0, cols), dtype=dtype)
+    if a.ndim != 2 or a.shape[1] != cols:
+        raise ValueError(f"{key} must have shape (N, {cols}), not {a.shape}")
     return np.ascontiguousarray(a)
 
 
-def _validate(tri: dict) -> dict:
+def _column(tri: dict, key: str, n: int, dtype) -> np.ndarray | None:
+    if tri.get(key) is None:
+        return None
+    a = np.asarray(tri[key], dtype=dtype).reshape(-1)
+    if a.shape[0] != n:
+        raise ValueError(f"{key} has {a.shape[0]} entries for {n} rows")
+    return a.copy()
+
+
+def _validate(tri: dict, o: Options) -> dict:
     unknown = set(tri) - INPUT_KEYS
     if unknown:
         raise KeyError(f"unknown input key(s): {', '.join(sorted(map(str, unknown)))}")
-    xy = _float2(tri, "vertices", 2)
-    if xy is None or xy.shape[0] < 3:
+    xy = np.asarray(tri.get("vertices", []), dtype=np.float64)
+    if xy.size == 0 or xy.reshape(-1, 2).shape[0] < 3:
         raise ValueError("Input must have at least three vertices.")
-    if xy.ndim != 2 or xy.shape[1] != 2:
-        raise ValueError(f"vertices must have shape (N, 2), not {xy.shape}")
+    xy = _rows(tri, "vertices", 2, np.float64)
     if not np.isfinite(xy).all():
         bad = int(np.flatnonzero(~np.isfinite(xy).all(axis=1))[0])
         raise ValueError(f"vertex {bad} has a coordinate that is not finite: {tuple(xy[bad])}")
     n = xy.shape[0]
     out = {"vertices": xy}
-    if tri.get("vertex_markers") is not None:
-        vm = np.asarray(tri["vertex_markers"], dtype=np.int32).reshape(-1)
-        if vm.shape[0] != n:
-            raise ValueError(f"vertex_markers has {vm.shape[0]} entries for {n} vertices")
-        out["vertex_markers"] = vm.copy()
-    va = _float2(tri, "vertex_attributes")
-    if va is not None and va.size:
-        if va.shape[0] != n:
-            raise ValueError(f"vertex_attributes has {va.shape[0]} rows for {n} vertices")
-        out["vertex_attributes"] = va
+    vm = _column(tri, "vertex_markers", n, np.int32)
+    out["vertex_markers"] = vm if vm is not None else np.zeros(n, dtype=np.int32)
+    va = tri.get("vertex_attributes")
+    if va is not None and np.asarray(va).size:
+        va = np.asarray(va, dtype=np.float64).reshape(n, -1)
+        out["vertex_attributes"] = np.ascontiguousarray(va)
+    if o.p:
+        segs = _rows(tri, "segments", 2, np.int64)
+        out["segments"] = segs if segs is not None else np.zeros((0, 2), dtype=np.int64)
+        sm = _column(tri, "segment_markers", out["segments"].shape[0], np.int32)
+        out["segment_markers"] = sm if sm is not None else np.zeros(out["segments"].shape[0], dtype=np.int32)
+        for key in ("holes", "regions"):
+            arr = _rows(tri, key, 2 if key == "holes" else 4, np.float64)
+            if arr is not None and len(arr):
+                if not np.isfinite(arr[:, :2]).all():
+                    raise ValueError(f"{key} must have finite coordinates")
+                out[key] = arr
     return out
 
 
@@ -74,55 +91,110 @@ def triangulate(tri: dict, opts: str = "", *, strategy: str = "triangle", seed: 
     Triangle's switches ``opts`` (library rules: no dash, 0-based indices).
 
     Returns a ``Result`` (a dict with the `triangle` package's keys) whose
-    ``work`` attribute holds the work counters.
+    ``work`` attribute holds the work counters and ``warnings`` Triangle's
+    warnings (duplicate vertices, invalid segments).
     """
     o = parse(opts)
-    inp = _validate(tri)
-    if o.p or o.r or o.quality:
-        raise NotImplementedError(
-            "segments (p), refinement (r) and quality meshing (q, a, u, D) are not implemented yet"
-        )
+    inp = _validate(tri, o)
+    if o.r or o.quality:
+        raise NotImplementedError("refinement (r) and quality meshing (q, a, u, D) are not implemented yet")
     work = counters.new_work()
-    m, dup = delaunay(inp["vertices"], work, seed=seed)
-    result = _assemble(m, inp, dup, o)
+    xy = inp["vertices"]
+    spare = 2 * len(inp.get("segments", ())) + 16
+    ms = start(xy, inp["vertex_markers"], work, seed, spare)
+    for i in np.flatnonzero(ms.dup >= 0):
+        ms.warnings.append(f"Warning:  A duplicate vertex at ({xy[i, 0]:.12g}, {xy[i, 1]:.12g}) appeared and was ignored.")
+    if o.p:
+        rows = clean_segments(inp["segments"], xy, ms.dup, ms.warnings)
+        recover_segments(ms, rows, inp["segment_markers"])
+        if o.c:
+            enclose_hull(ms)
+        carve(ms, o, inp.get("holes"), inp.get("regions"), xy)
+    elif o.c:
+        enclose_hull(ms)
+    else:
+        _mark_hull_vertices(ms)
+    result = _assemble(ms, inp, o)
     result.work = counters.as_dict(work)
+    result.warnings = ms.warnings
     return result
 
 
-def _assemble(m, inp: dict, dup: np.ndarray, o: Options) -> Result:
-    xy = inp["vertices"]
-    n = xy.shape[0]
+def _mark_hull_vertices(ms: Mesher) -> None:
+    """Triangulating a point set marks every hull vertex whose marker is 0 with 1."""
+    m = ms.m
+    tris = live_triangles(m)
+    e = (3 * tris[:, None] + np.arange(3)).ravel()
+    e = e[m.twin[e] == NO_EDGE]
+    ends = edge_ends(m, e).ravel()
+    ms.vmark[ends[ms.vmark[ends] == 0]] = 1
+
+
+def _vertex_attributes(ms: Mesher, attrs: np.ndarray, nv: int) -> np.ndarray:
+    """Input attributes, then interpolated ones for vertices added on segments."""
+    out = np.zeros((nv, attrs.shape[1]))
+    out[: ms.n_input] = attrs
+    for v in range(ms.n_input, nv):  # in creation order: parents come first
+        p0, p1, t = ms.parent[v]
+        if p0 >= 0:
+            a0, a1 = out[int(p0)], out[int(p1)]
+            out[v] = a0 + t * (a1 - a0)
+    return out
+
+
+def _assemble(ms: Mesher, inp: dict, o: Options) -> Result:
+    m = ms.m
+    nv = int(m.size[S_NVERT])
     tris = live_triangles(m)
     tri_index = np.full(m.stamp.shape[0], -1, dtype=np.int64)
     tri_index[tris] = np.arange(tris.size)
-    markers = inp.get("vertex_markers", np.zeros(n, dtype=np.int32)).astype(np.int32)
-    hull = hull_edges(m, tris)
-    # Triangle marks hull vertices of a point set (and -c hull segments) with 1.
-    on_hull = np.unique(hull.ravel())
-    markers[on_hull[markers[on_hull] == 0]] = 1
+    corners = m.corner.reshape(-1, 3)[tris]
 
-    keep = dup < 0 if o.j else np.ones(n, dtype=bool)
-    new_id = np.cumsum(keep) - 1 if o.j else np.arange(n)
+    if o.j:
+        keep = np.zeros(nv, dtype=bool)
+        keep[corners.ravel()] = True
+        if tris.size == 0:
+            keep[: ms.n_input] = ms.dup < 0
+        new_id = np.cumsum(keep) - 1
+    else:
+        keep = np.ones(nv, dtype=bool)
+        new_id = np.arange(nv)
+
+    def ids(a):
+        return (new_id[a] if o.j else a).astype(np.int32)
+
     out = Result()
     if not o.N:
-        _put(out, "vertices", xy[keep])
+        _put(out, "vertices", m.xy[:nv][keep])
         if "vertex_attributes" in inp:
-            _put(out, "vertex_attributes", inp["vertex_attributes"][keep])
+            _put(out, "vertex_attributes", _vertex_attributes(ms, inp["vertex_attributes"], nv)[keep])
         if not o.B:
-            _put(out, "vertex_markers", _col(markers[keep]))
-    corners = m.corner.reshape(-1, 3)[tris]
+            _put(out, "vertex_markers", _col(ms.vmark[:nv][keep]))
     if not o.E:
-        _put(out, "triangles", (new_id[corners] if o.j else corners).astype(np.int32))
-    if o.c and not o.P:
-        # a subsegment made on edge a -> b is stored b -> a (Triangle's order)
-        _put(out, "segments", new_id[hull[:, ::-1]].astype(np.int32))
+        _put(out, "triangles", ids(corners))
+        if o.A and ms.region_attr is not None:
+            _put(out, "triangle_attributes", ms.region_attr[tris].reshape(-1, 1))
+    constrained = None
+    if (o.p or o.c) and not o.P:
+        e = unique_edges(m, tris, tri_index)
+        constrained = e[m.seg[e] != NO_SEG]
+        # a subsegment made on triangle edge a -> b is listed b -> a (Triangle's order)
+        _put(out, "segments", ids(edge_ends(m, constrained)[:, ::-1]))
         if not o.B:
-            _put(out, "segment_markers", _col(np.ones(hull.shape[0])))
+            _put(out, "segment_markers", _col(ms.segs.marker[m.seg[constrained]]))
+        if o.p:
+            for key in ("holes", "regions"):
+                if key in inp:
+                    _put(out, key, inp[key])
     if o.e:
         e = unique_edges(m, tris, tri_index)
-        _put(out, "edges", new_id[edge_ends(m, e)].astype(np.int32))
+        _put(out, "edges", ids(edge_ends(m, e)))
         if not o.B:
-            _put(out, "edge_markers", _col(m.twin[e] == NO_EDGE))
+            if o.p or o.c:
+                marks = np.where(m.seg[e] != NO_SEG, ms.segs.marker[np.maximum(m.seg[e], 0)], 0)
+            else:
+                marks = m.twin[e] == NO_EDGE
+            _put(out, "edge_markers", _col(marks))
     if o.n:
         tw = m.twin.reshape(-1, 3)[tris]
         nb = np.where(tw == NO_EDGE, -1, tri_index[np.maximum(tw, 0) // 3])

@@ -8,21 +8,24 @@ from __future__ import annotations
 
 import numpy as np
 
-from .mesh import NO_EDGE, Mesh, live_triangles
+from .mesh import NO_EDGE, Mesh
 
 
 class Result(dict):
-    """The output dict, plus ``work`` (counters), ``trace`` and ``steps``."""
+    """The output dict, plus ``work`` (counters), ``trace``, ``steps`` and
+    ``warnings`` (Triangle's warning lines, which the library never prints)."""
 
     work: dict[str, int]
     trace: object
     steps: object
+    warnings: list[str]
 
     def __init__(self, *args, **kwargs):
         super().__init__(*args, **kwargs)
         self.work = {}
         self.trace = None
         self.steps = None
+        self.warnings = []
 
 
 def _col(a, dtype=np.int32) -> np.ndarray:
@@ -32,15 +35,6 @@ def _col(a, dtype=np.int32) -> np.ndarray:
 def _put(out: dict, key: str, arr: np.ndarray) -> None:
     if arr is not None and arr.size > 0:
         out[key] = np.ascontiguousarray(arr)
-
-
-def hull_edges(m: Mesh, tris: np.ndarray) -> np.ndarray:
-    """Boundary edges (org, dest) of the live triangles ``tris``, interior on the left."""
-    e = (3 * tris[:, None] + np.arange(3)).ravel()
-    e = e[m.twin[e] == NO_EDGE]
-    nxt = np.where(e % 3 == 2, e - 2, e + 1)
-    prv = np.where(e % 3 == 0, e + 2, e - 1)
-    return np.stack([m.corner[nxt], m.corner[prv]], axis=1)
 
 
 def unique_edges(m: Mesh, tris: np.ndarray, tri_index: np.ndarray) -> np.ndarray:

@@ -1,0 +1,124 @@
+"""Holes, concavities and regions (Triangle's ``carveholes``, ``-p`` without ``-r``).
+
+Triangles are "infected" from the convex hull (unless ``-c``) and from each
+hole point, and the infection spreads across every edge that is not a
+subsegment.  Infected triangles are deleted; a subsegment that ends up with
+live triangles on one side only becomes a boundary (marker 0 -> 1, and its
+endpoints likewise).  Regions are then flood-filled the same way, each in
+input order, so later regions overwrite earlier ones.
+"""
+
+from __future__ import annotations
+
+from .counters import C_DELETED
+from .jit import kernel
+from .locate import LOC_INSIDE, LOC_ON_EDGE, LOC_ON_VERTEX, walk
+from .mesh import NO_EDGE, NO_SEG, S_NSLOT, kill_triangle, lnext, lprev
+
+
+@kernel
+def _boundary_marks(m, segs, vmark, e, endpoints_always):
+    r = m.seg[e]
+    was_zero = segs.marker[r] == 0
+    if was_zero:
+        segs.marker[r] = 1
+    if was_zero or endpoints_always:
+        for v in (m.corner[lnext(e)], m.corner[lprev(e)]):
+            if vmark[v] == 0:
+                vmark[v] = 1
+
+
+@kernel
+def infect_hull(m, segs, vmark, infected):
+    """Infect every triangle on a hull edge that is not a subsegment."""
+    for t in range(m.size[S_NSLOT]):
+        if m.stamp[t] <= 0:
+            continue
+        for k in range(3):
+            e = 3 * t + k
+            if m.twin[e] == NO_EDGE:
+                if m.seg[e] == NO_SEG:
+                    infected[t] = 1
+                else:
+                    _boundary_marks(m, segs, vmark, e, False)
+
+
+@kernel
+def locate_points(m, work, pts, lo, hi, found, state):
+    """For each point inside the box ``lo..hi``: the triangle holding it
+    (``found[i, 0]``) and that triangle's stamp (``found[i, 1]``); -1 if it is
+    outside the box or the mesh."""
+    t0 = m.size[S_NSLOT] - 1
+    while t0 >= 0 and m.stamp[t0] <= 0:
+        t0 -= 1
+    for i in range(pts.shape[0]):
+        found[i, 0] = -1
+        found[i, 1] = 0
+        x, y = pts[i, 0], pts[i, 1]
+        if t0 < 0 or not (lo[0] <= x <= hi[0] and lo[1] <= y <= hi[1]):
+            continue
+        status, e = walk(m, work, t0, x, y, state, 4 * m.stamp.shape[0] + 64)
+        if status == LOC_INSIDE or status == LOC_ON_EDGE or status == LOC_ON_VERTEX:
+            found[i, 0] = e // 3
+            found[i, 1] = m.stamp[e // 3]
+
+
+@kernel
+def plague(m, work, segs, vmark, infected, stack):
+    """Spread the infection across non-subsegment edges and delete the
+    infected triangles.  Returns how many were deleted."""
+    n = 0
+    for t in range(m.size[S_NSLOT]):
+        if m.stamp[t] > 0 and infected[t]:
+            stack[n] = t
+            n += 1
+    while n > 0:
+        n -= 1
+        t = stack[n]
+        for k in range(3):
+            e = 3 * t + k
+            tw = m.twin[e]
+            if tw != NO_EDGE and m.seg[e] == NO_SEG and not infected[tw // 3]:
+                infected[tw // 3] = 1
+                stack[n] = tw // 3
+                n += 1
+    killed = 0
+    for t in range(m.size[S_NSLOT]):
+        if m.stamp[t] <= 0 or not infected[t]:
+            continue
+        for k in range(3):
+            e = 3 * t + k
+            tw = m.twin[e]
+            if tw != NO_EDGE and not infected[tw // 3]:
+                m.twin[tw] = NO_EDGE
+                if m.seg[tw] != NO_SEG:
+                    _boundary_marks(m, segs, vmark, tw, True)
+        kill_triangle(m, t)
+        work[C_DELETED] += 1
+        killed += 1
+    return killed
+
+
+@kernel
+def spread_regions(m, found, values, out, seen, stack):
+    """Flood-fill each located region (in order) across non-subsegment edges,
+    writing ``values[i]`` into ``out[t]`` for its triangles."""
+    for i in range(found.shape[0]):
+        t0 = found[i, 0]
+        if t0 < 0 or m.stamp[t0] != found[i, 1]:
+            continue  # outside the mesh, or eaten by a hole
+        mark = i + 1
+        seen[t0] = mark
+        stack[0] = t0
+        n = 1
+        while n > 0:
+            n -= 1
+            t = stack[n]
+            out[t] = values[i]
+            for k in range(3):
+                e = 3 * t + k
+                tw = m.twin[e]
+                if tw != NO_EDGE and m.seg[e] == NO_SEG and seen[tw // 3] != mark:
+                    seen[tw // 3] = mark
+                    stack[n] = tw // 3
+                    n += 1

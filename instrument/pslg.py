@@ -1,0 +1,165 @@
+"""The ``-p`` pipeline: Delaunay triangulation, segment recovery, carving.
+
+``Mesher`` holds everything the stages share and grows the arrays when a
+kernel reports that it ran out of room (kernels never allocate).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from . import cdt
+from .carve import infect_hull, locate_points, plague, spread_regions
+from .delaunay import delaunay
+from .mesh import S_NVERT, Mesh, grow_triangles, grow_vertices
+from .switches import Options
+
+
+@dataclass
+class Mesher:
+    """The mesh being built and its side tables."""
+
+    m: Mesh
+    work: np.ndarray
+    n_input: int
+    dup: np.ndarray  # duplicate_of for input vertices
+    vmark: np.ndarray  # (V,) int32 vertex markers
+    parent: np.ndarray  # (V, 3): new vertex = xy[p0] + p2 * (xy[p1] - xy[p0])
+    segs: cdt.Segs
+    vtri: np.ndarray  # (V,) int64 an edge leaving each vertex
+    state: np.ndarray = field(default_factory=lambda: np.array([12345], dtype=np.int64))
+    warnings: list[str] = field(default_factory=list)
+    region_attr: np.ndarray | None = None  # per triangle slot, with -A
+    region_area: np.ndarray | None = None  # per triangle slot, with a bare -a
+
+    @property
+    def n_vertices(self) -> int:
+        return int(self.m.size[S_NVERT])
+
+    def grow(self, vertices: int = 0, triangles: int = 0, records: int = 0) -> None:
+        """Make room for at least that many more of each."""
+        m = self.m
+        nv = self.n_vertices
+        if nv + vertices > m.xy.shape[0]:
+            m = grow_vertices(m, nv + vertices)
+            cap = m.xy.shape[0]
+            self.vmark = _widen(self.vmark, cap, 0)
+            self.parent = _widen(self.parent, cap, -1.0)
+            self.vtri = _widen(self.vtri, cap, -1)
+        spare = m.stamp.shape[0] - int(m.size[1]) + int(m.size[2])
+        if spare < triangles:
+            m = grow_triangles(m, m.stamp.shape[0] + triangles)
+        if int(self.segs.size[cdt.R_NREC]) + records > self.segs.marker.shape[0]:
+            self.segs = cdt.grow_segs(self.segs, int(self.segs.size[cdt.R_NREC]) + records)
+        self.m = m
+
+
+def _widen(a: np.ndarray, n: int, fill) -> np.ndarray:
+    out = np.full((n,) + a.shape[1:], fill, dtype=a.dtype)
+    out[: a.shape[0]] = a
+    return out
+
+
+def start(xy: np.ndarray, markers: np.ndarray, work: np.ndarray, seed: int, spare_vertices: int) -> Mesher:
+    """Delaunay-triangulate the input vertices, with room for more."""
+    n = xy.shape[0]
+    m, dup = delaunay(xy, work, seed=seed)
+    cap = n + max(spare_vertices, 16)
+    m = grow_vertices(m, cap)
+    m = grow_triangles(m, 2 * cap + 8)
+    vmark = np.zeros(cap, dtype=np.int32)
+    vmark[:n] = markers
+    mesher = Mesher(
+        m=m,
+        work=work,
+        n_input=n,
+        dup=dup,
+        vmark=vmark,
+        parent=np.full((cap, 3), -1.0),
+        segs=cdt.new_segs(max(16, 2 * spare_vertices)),
+        vtri=np.full(cap, -1, dtype=np.int64),
+    )
+    return mesher
+
+
+def clean_segments(segments: np.ndarray, xy: np.ndarray, dup: np.ndarray, warnings: list[str]) -> np.ndarray:
+    """Input segments as rows (a, b, input index), with Triangle's warnings for
+    invalid endpoints and coincident endpoints; endpoints that are duplicate
+    vertices are mapped to the copy in the mesh."""
+    n = xy.shape[0]
+    rows = []
+    for i, (a, b) in enumerate(np.asarray(segments, dtype=np.int64).reshape(-1, 2)):
+        if not 0 <= a < n:
+            warnings.append(f"Warning:  Invalid first endpoint of segment {i} in input.")
+            continue
+        if not 0 <= b < n:
+            warnings.append(f"Warning:  Invalid second endpoint of segment {i} in input.")
+            continue
+        a = a if dup[a] < 0 else dup[a]
+        b = b if dup[b] < 0 else dup[b]
+        if a == b or (xy[a] == xy[b]).all():
+            warnings.append(f"Warning:  Endpoints of segment {i} are coincident in input.")
+            continue
+        rows.append((a, b, i))
+    return np.array(rows, dtype=np.int64).reshape(-1, 3)
+
+
+def recover_segments(ms: Mesher, rows: np.ndarray, seg_markers: np.ndarray) -> None:
+    """Insert the segments ``rows`` (from ``clean_segments``) in input order."""
+    if rows.shape[0] == 0 or int(ms.m.size[1]) == 0:
+        return
+    cdt.build_vertex_edges(ms.m, ms.vtri)
+    pieces = np.zeros((rows.shape[0] + 64, 3), dtype=np.int64)
+    pieces[: rows.shape[0]] = rows[::-1]
+    ms.segs.size[cdt.R_SP] = rows.shape[0]
+    in_marker = np.asarray(seg_markers, dtype=np.int32)
+    while True:
+        buf = np.zeros(10 * (ms.n_vertices + 16), dtype=np.int64)
+        status = cdt.insert_segments(
+            ms.m, ms.work, ms.segs, pieces, in_marker, ms.vmark, ms.vtri, buf, ms.parent, ms.state
+        )
+        if status == cdt.DONE:
+            return
+        if status == cdt.FAILED:
+            raise RuntimeError("internal error: segment recovery failed (please report this input)")
+        ms.grow(vertices=ms.n_vertices // 2 + 16, triangles=ms.m.stamp.shape[0] // 2 + 64, records=ms.segs.marker.shape[0])
+        if int(ms.segs.size[cdt.R_SP]) + 2 > pieces.shape[0]:
+            pieces = _widen(pieces, 2 * pieces.shape[0], 0)
+
+
+def enclose_hull(ms: Mesher) -> None:
+    """-c: every hull edge becomes a subsegment with marker 1."""
+    while not cdt.mark_hull(ms.m, ms.segs, ms.vmark, -1):
+        ms.grow(records=ms.segs.marker.shape[0])
+
+
+def carve(ms: Mesher, o: Options, holes: np.ndarray | None, regions: np.ndarray | None, xy_in: np.ndarray) -> None:
+    """Remove concavities (unless -c) and holes (unless -O), then spread regions."""
+    m = ms.m
+    slots = m.stamp.shape[0]
+    lo = xy_in.min(axis=0)
+    hi = xy_in.max(axis=0)
+    found_regions = None
+    if regions is not None and len(regions):
+        found_regions = np.zeros((len(regions), 2), dtype=np.int64)
+        locate_points(m, ms.work, np.ascontiguousarray(regions[:, :2]), lo, hi, found_regions, ms.state)
+    infected = np.zeros(slots, dtype=np.uint8)
+    if not o.c:
+        infect_hull(m, ms.segs, ms.vmark, infected)
+    if holes is not None and len(holes) and not o.O:
+        found = np.zeros((len(holes), 2), dtype=np.int64)
+        locate_points(m, ms.work, np.ascontiguousarray(holes), lo, hi, found, ms.state)
+        infected[found[found[:, 0] >= 0, 0]] = 1
+    stack = np.zeros(slots, dtype=np.int64)
+    plague(m, ms.work, ms.segs, ms.vmark, infected, stack)
+    if found_regions is not None:
+        seen = np.zeros(slots, dtype=np.int64)
+        if o.A:
+            ms.region_attr = np.zeros(slots)
+            spread_regions(m, found_regions, np.ascontiguousarray(regions[:, 2]), ms.region_attr, seen, stack)
+        if o.var_area:
+            ms.region_area = np.full(slots, -1.0)
+            seen[:] = 0
+            spread_regions(m, found_regions, np.ascontiguousarray(regions[:, 3]), ms.region_area, seen, stack)
