@@ -29,8 +29,11 @@ def _boundary_marks(m, segs, vmark, e, endpoints_always):
 
 
 @kernel
-def infect_hull(m, segs, vmark, infected):
-    """Infect every triangle on a hull edge that is not a subsegment."""
+def infect_hull(m, segs, vmark, infected, queue):
+    """Infect every triangle on a hull edge that is not a subsegment, appending
+    it to ``queue``; hull subsegments with marker 0 become boundaries.
+    Returns the queue length."""
+    n = 0
     for t in range(m.size[S_NSLOT]):
         if m.stamp[t] <= 0:
             continue
@@ -38,9 +41,13 @@ def infect_hull(m, segs, vmark, infected):
             e = 3 * t + k
             if m.twin[e] == NO_EDGE:
                 if m.seg[e] == NO_SEG:
-                    infected[t] = 1
+                    if not infected[t]:
+                        infected[t] = 1
+                        queue[n] = t
+                        n += 1
                 else:
                     _boundary_marks(m, segs, vmark, e, False)
+    return n
 
 
 @kernel
@@ -64,35 +71,37 @@ def locate_points(m, work, pts, lo, hi, found, state):
 
 
 @kernel
-def plague(m, work, segs, vmark, infected, stack):
-    """Spread the infection across non-subsegment edges and delete the
-    infected triangles.  Returns how many were deleted."""
-    n = 0
-    for t in range(m.size[S_NSLOT]):
-        if m.stamp[t] > 0 and infected[t]:
-            stack[n] = t
-            n += 1
-    while n > 0:
-        n -= 1
-        t = stack[n]
+def plague(m, work, segs, vmark, infected, queue, n):
+    """Spread the infection from ``queue[:n]`` across non-subsegment edges and
+    delete the infected triangles.  Returns how many were deleted.
+
+    As in Triangle, a subsegment is made a boundary (marker 0 -> 1, endpoints
+    0 -> 1) when the infection reaches it while the other side is still
+    healthy, even if that side is infected later; so the endpoints of
+    segments inside holes get marker 1 too.
+    """
+    head = 0
+    while head < n:
+        t = queue[head]
+        head += 1
         for k in range(3):
             e = 3 * t + k
             tw = m.twin[e]
-            if tw != NO_EDGE and m.seg[e] == NO_SEG and not infected[tw // 3]:
+            if tw == NO_EDGE or infected[tw // 3]:
+                continue
+            if m.seg[e] != NO_SEG:
+                _boundary_marks(m, segs, vmark, e, True)
+            else:
                 infected[tw // 3] = 1
-                stack[n] = tw // 3
+                queue[n] = tw // 3
                 n += 1
     killed = 0
-    for t in range(m.size[S_NSLOT]):
-        if m.stamp[t] <= 0 or not infected[t]:
-            continue
+    for i in range(n):
+        t = queue[i]
         for k in range(3):
-            e = 3 * t + k
-            tw = m.twin[e]
+            tw = m.twin[3 * t + k]
             if tw != NO_EDGE and not infected[tw // 3]:
                 m.twin[tw] = NO_EDGE
-                if m.seg[tw] != NO_SEG:
-                    _boundary_marks(m, segs, vmark, tw, True)
         kill_triangle(m, t)
         work[C_DELETED] += 1
         killed += 1

@@ -330,13 +330,12 @@ def _recover(m, work, segs, vmark, vtri, a, b, marker, source, buf, state):
 @kernel
 def _split_at_crossing(m, work, segs, vmark, vtri, a, b, c, stack, parent):
     """Insert the crossing point of segment ``a b`` with subsegment edge ``c``
-    as a new vertex splitting that subsegment.  Returns the vertex, or -1."""
+    as a new vertex splitting that subsegment.  Returns the vertex, or -1 if
+    the tables are full.  A crossing point that rounds onto an endpoint of
+    the crossed edge (three segments through one point) is that endpoint."""
     xy = m.xy
     nv = m.size[S_NVERT]
     r = m.seg[c]
-    half = new_record(segs, segs.marker[r], segs.source[r])
-    if half < 0:
-        return -1
     left = m.corner[lprev(c)]
     right = m.corner[lnext(c)]
     # parameter along the crossed subsegment, right -> left
@@ -347,8 +346,17 @@ def _split_at_crossing(m, work, segs, vmark, vtri, a, b, c, stack, parent):
     if den != 0.0:
         t = (ey * (xy[right, 0] - xy[a, 0]) - ex * (xy[right, 1] - xy[a, 1])) / den
         t = min(max(t, 0.0), 1.0)
-    xy[nv, 0] = xy[right, 0] + t * tx
-    xy[nv, 1] = xy[right, 1] + t * ty
+    px = xy[right, 0] + t * tx
+    py = xy[right, 1] + t * ty
+    if px == xy[right, 0] and py == xy[right, 1]:
+        return right
+    if px == xy[left, 0] and py == xy[left, 1]:
+        return left
+    half = new_record(segs, segs.marker[r], segs.source[r])
+    if half < 0:
+        return -1
+    xy[nv, 0] = px
+    xy[nv, 1] = py
     parent[nv, 0] = right
     parent[nv, 1] = left
     parent[nv, 2] = t

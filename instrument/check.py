@@ -52,6 +52,7 @@ eaten input vertices).
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections import defaultdict
 
@@ -187,7 +188,8 @@ def _sign2x2(a, b, c, d, e, f, g, h):
         | (right == 0)
         | ((left > 0) != (right > 0))
     )
-    out = np.sign(det).astype(np.int8)
+    out = np.zeros(det.shape, dtype=np.int8)
+    out[sure] = np.sign(det[sure])
     bad = np.flatnonzero(~sure)
     if bad.size:
         A, B, C, D, E, F, G, H = _object_ints([v[bad] for v in (a, b, c, d, e, f, g, h)])
@@ -238,7 +240,8 @@ def _incircle_xy(ax, ay, bx, by, cx, cy, dx, dy):
         )
         bound = _ICC_BOUND * perm
     sure = _safe(adx, ady, bdx, bdy, cdx, cdy) & ((det > bound) | (-det > bound))
-    out = np.sign(det).astype(np.int8)
+    out = np.zeros(det.shape, dtype=np.int8)
+    out[sure] = np.sign(det[sure])
     on = ((ax == dx) & (ay == dy)) | ((bx == dx) & (by == dy)) | ((cx == dx) & (cy == dy))
     out[on] = 0
     sure |= on
@@ -289,12 +292,17 @@ class _Problems:
     def __init__(self):
         self.lines: list[str] = []
 
-    def add(self, what: str, items: list[str]):
-        if not items:
+    def add(self, what: str, items, total: int | None = None):
+        """Report ``items`` (a list, or an iterable of ``total`` messages of
+        which only the first MAX_MESSAGES are formatted)."""
+        if total is None:
+            items = list(items)
+            total = len(items)
+        if not total:
             return
-        self.lines.extend(items[:MAX_MESSAGES])
-        if len(items) > MAX_MESSAGES:
-            self.lines.append(f"... and {len(items) - MAX_MESSAGES} more: {what}")
+        self.lines.extend(itertools.islice(items, MAX_MESSAGES))
+        if total > MAX_MESSAGES:
+            self.lines.append(f"... and {total - MAX_MESSAGES} more: {what}")
 
 
 def _int_array(x, cols):
@@ -361,26 +369,26 @@ class _Mesh:
 def _check_triangles(m: _Mesh, probs: _Problems):
     T = m.T
     bad = np.flatnonzero(~m.inrange)
-    probs.add("triangles with an index out of range", [
+    probs.add("triangles with an index out of range", (
         f"triangle {i} has a vertex index out of range [0, {m.N}): {T[i].tolist()}" for i in bad
-    ])
+    ), len(bad))
     bad = np.flatnonzero(m.inrange & ~m.topo)
-    probs.add("degenerate triangles", [
+    probs.add("degenerate triangles", (
         f"triangle {i} repeats a corner: {T[i].tolist()}" for i in bad
-    ])
+    ), len(bad))
     bad = np.flatnonzero(m.topo & ~m.finite)
-    probs.add("non-finite coordinates", [
+    probs.add("non-finite coordinates", (
         f"triangle {i} {T[i].tolist()} has a non-finite vertex coordinate" for i in bad
-    ])
+    ), len(bad))
     bad = np.flatnonzero(m.geo & (m.orient < 0))
-    probs.add("clockwise triangles", [
+    probs.add("clockwise triangles", (
         f"triangle {i} {T[i].tolist()} is clockwise (exact orientation < 0)" for i in bad
-    ])
+    ), len(bad))
     bad = np.flatnonzero(m.geo & (m.orient == 0))
-    probs.add("zero-area triangles", [
+    probs.add("zero-area triangles", (
         f"triangle {i} {T[i].tolist()} has zero area (collinear or coincident corners)"
         for i in bad
-    ])
+    ), len(bad))
 
     # Duplicate triangles (same corner set).
     idx = np.flatnonzero(m.topo)
@@ -393,17 +401,11 @@ def _check_triangles(m: _Mesh, probs: _Problems):
             inv = inv.ravel()
         else:
             _, inv, cnt = np.unique(key, return_inverse=True, return_counts=True)
-        dup = np.flatnonzero(cnt[inv] > 1)
-        msgs = []
-        seen = set()
-        for j in dup:
-            g = int(inv[j])
-            if g in seen:
-                continue
-            seen.add(g)
-            members = idx[inv == g]
-            msgs.append(f"duplicate triangles {members.tolist()} (corners {sorted(m.Tc[members[0]].tolist())})")
-        probs.add("duplicate triangles", msgs)
+        groups = np.flatnonzero(cnt > 1)
+        probs.add("duplicate triangles", (
+            f"duplicate triangles {idx[inv == g].tolist()} "
+            f"(corners {sorted(m.Tc[idx[inv == g][0]].tolist())})" for g in groups
+        ), len(groups))
 
     # Coincident vertices used by triangles.
     used = np.unique(m.Tc[m.topo & m.finite])
@@ -413,10 +415,10 @@ def _check_triangles(m: _Mesh, probs: _Problems):
         sp = pts[order]
         same = (sp[1:] == sp[:-1]).all(axis=1)
         k = np.flatnonzero(same)
-        probs.add("coincident vertices", [
+        probs.add("coincident vertices", (
             f"vertices {int(used[order[j]])} and {int(used[order[j + 1]])} used by triangles "
             f"have the same coordinates {sp[j].tolist()}" for j in k
-        ])
+        ), len(k))
 
 
 class _Edges:
@@ -453,45 +455,46 @@ def _check_edges(m: _Mesh, e: _Edges, probs: _Problems):
     if len(e.key) == 0:
         return
     sk = e.sorted_key
-    dup = np.flatnonzero(sk[1:] == sk[:-1])
-    msgs = []
-    last = None
-    for j in dup:
-        if sk[j] == last:
-            continue
-        last = sk[j]
-        tris = e.tri[e.order[sk == sk[j]]]
-        a, b = divmod(int(sk[j]), int(e.n))
-        msgs.append(
-            f"directed edge ({a} -> {b}) is used by triangles {tris.tolist()} "
-            "(inconsistent orientation, duplicate or overlapping triangles)"
-        )
-    probs.add("directed edges used twice", msgs)
-    uk, cnt = np.unique(e.ukey, return_counts=True)
-    many = uk[cnt > 2]
-    msgs = []
-    for k in many:
+    dkeys = np.unique(sk[1:][sk[1:] == sk[:-1]])
+
+    def directed(k):
         a, b = divmod(int(k), int(e.n))
-        tris = np.unique(e.tri[e.ukey == k])
-        msgs.append(f"edge {{{a}, {b}}} is shared by {int(cnt[uk == k][0])} triangles {tris.tolist()}")
-    probs.add("edges shared by more than two triangles", msgs)
+        tris = e.tri[e.key == k]
+        return (f"directed edge ({a} -> {b}) is used by triangles {tris.tolist()} "
+                "(inconsistent orientation, duplicate or overlapping triangles)")
+
+    probs.add("directed edges used twice", map(directed, dkeys), len(dkeys))
+    uk, cnt = np.unique(e.ukey, return_counts=True)
+    many = np.flatnonzero(cnt > 2)
+
+    def shared(j):
+        a, b = divmod(int(uk[j]), int(e.n))
+        tris = np.unique(e.tri[e.ukey == uk[j]])
+        return f"edge {{{a}, {b}}} is shared by {int(cnt[j])} triangles {tris.tolist()}"
+
+    probs.add("edges shared by more than two triangles", map(shared, many), len(many))
 
 
 def _levels(dim, h0):
-    with np.errstate(divide="ignore"):
+    with np.errstate(divide="ignore", over="ignore", invalid="ignore"):
         lev = np.ceil(np.log2(np.maximum(dim, h0 * 2.0**-60) / h0))
-    lev = np.maximum(lev, 0).astype(np.int64)
-    lev += dim > np.ldexp(h0, lev)  # guard against log2 rounding
+    lev = np.clip(np.nan_to_num(lev, posinf=2000), 0, 2000).astype(np.int64)
+    with np.errstate(over="ignore"):
+        lev += dim > np.ldexp(h0, lev)  # guard against log2 rounding
     return lev
 
 
 def _cells(box, lev, h0, x0, y0):
     """Grid cells (at level lev, scalar) touched by the boxes: (object, key)."""
-    s = math.ldexp(h0, int(lev))
-    ix0 = np.floor((box[:, 0] - x0) / s).astype(np.int64)
-    ix1 = np.floor((box[:, 1] - x0) / s).astype(np.int64)
-    iy0 = np.floor((box[:, 2] - y0) / s).astype(np.int64)
-    iy1 = np.floor((box[:, 3] - y0) / s).astype(np.int64)
+    s = math.ldexp(h0, int(min(lev, 2000)))  # may be inf: then one cell
+
+    def index(x, origin):
+        # monotone in x, so overlapping intervals always share a cell
+        with np.errstate(all="ignore"):
+            return np.floor(np.clip((x - origin) / s, 0.0, 2.0**29)).astype(np.int64)
+
+    ix0, ix1 = index(box[:, 0], x0), index(box[:, 1], x0)
+    iy0, iy1 = index(box[:, 2], y0), index(box[:, 3], y0)
     objs, keys = [], []
     ar = np.arange(len(box))
     for dx in range(3):
@@ -526,7 +529,7 @@ def _box_pairs(tbox, ebox):
     edim = np.maximum(ebox[:, 1] - ebox[:, 0], ebox[:, 3] - ebox[:, 2])
     h0 = float(np.median(tdim)) if len(tdim) else 1.0
     h0 = max(h0, span * 2.0**-28, 2.0**-1000)
-    h0 = 2.0 ** math.ceil(math.log2(h0))
+    h0 = 2.0 ** min(math.ceil(math.log2(h0)), 1000) if math.isfinite(h0) else 2.0**1000
     tl = _levels(tdim, h0)
     el = _levels(edim, h0)
     pairs_t, pairs_e = [], []
@@ -627,13 +630,12 @@ def _check_overlap(m: _Mesh, e: _Edges, probs: _Problems):
     hit = _open_segment_meets_triangle(
         pa[pe], pb[pe], m.V[m.Tc[tri, 0]], m.V[m.Tc[tri, 1]], m.V[m.Tc[tri, 2]]
     )
-    msgs = [
+    probs.add("overlapping triangles", (
         f"triangle {int(t)} {m.T[t].tolist()} meets the interior of boundary edge "
         f"({int(ea[k])}, {int(eb[k])}) of triangle {int(owner[k])}: overlapping triangles "
         "or a hanging vertex"
         for t, k in zip(tri[hit], pe[hit])
-    ]
-    probs.add("overlapping triangles", msgs)
+    ), int(hit.sum()))
 
 
 # --------------------------------------------------------------------------
@@ -683,12 +685,12 @@ def _check_delaunay(m: _Mesh, e: _Edges, probs: _Problems):
     D = m.V[e.apex[tw[idx]]]
     s = _incircle_xy(A[:, 0], A[:, 1], B[:, 0], B[:, 1], C[:, 0], C[:, 1], D[:, 0], D[:, 1])
     bad = idx[s > 0]
-    probs.add("non-Delaunay edges", [
+    probs.add("non-Delaunay edges", (
         f"edge {{{int(e.a[k])}, {int(e.b[k])}}} is not locally Delaunay: vertex "
         f"{int(e.apex[e.twin[k]])} (triangle {int(e.tri[e.twin[k]])}) is strictly inside the "
         f"circumcircle of triangle {int(e.tri[k])}"
         for k in bad
-    ])
+    ), len(bad))
 
 
 # --------------------------------------------------------------------------
@@ -698,6 +700,8 @@ def _check_delaunay(m: _Mesh, e: _Edges, probs: _Problems):
 
 def _on_line(u, v, x) -> bool:
     """x lies on the line uv: exactly, or within ON_SEGMENT_RTOL."""
+    if not all(map(math.isfinite, (*u, *v, *x))):
+        return False
     dx, dy = v[0] - u[0], v[1] - u[1]
     cross = dx * (x[1] - u[1]) - dy * (x[0] - u[0])
     length = math.hypot(dx, dy)
@@ -731,10 +735,10 @@ def _pslg_chains(m: _Mesh, pslg, probs: _Problems):
     if m.M == 0 or not len(iseg):
         return
     adj = _subseg_adjacency(m)
-    V = m.V
+    Vl = [tuple(p) for p in m.V.tolist()]
     where = {}
     for w in adj:
-        where.setdefault((float(V[w, 0]), float(V[w, 1])), w)
+        where.setdefault(Vl[w], w)
     limit = len(m.S) + 1
     msgs = []
     for k, (i, j) in enumerate(iseg.tolist()):
@@ -757,7 +761,7 @@ def _pslg_chains(m: _Mesh, pslg, probs: _Problems):
         for _ in range(limit):
             best, bestpt = None, None
             for x in adj[cur]:
-                xp = (float(V[x, 0]), float(V[x, 1]))
+                xp = Vl[x]
                 if xp == v:
                     best, bestpt = x, xp
                     break
@@ -776,7 +780,7 @@ def _pslg_chains(m: _Mesh, pslg, probs: _Problems):
                 break
             path.append(best)
             cur, cpt = best, bestpt
-        if (float(V[cur, 0]), float(V[cur, 1])) != v:
+        if Vl[cur] != v:
             msgs.append(
                 f"input segment {k} ({i}, {j}) from {u} to {v} is not covered by a chain of "
                 f"collinear subsegments (stopped at output vertex {cur} at {cpt})"
@@ -958,10 +962,10 @@ def _check_area(m: _Mesh, max_area, probs: _Problems):
     idx = np.flatnonzero(m.good)
     area = _signed_areas(m, idx)
     bad = np.flatnonzero(area > max_area * (1.0 + AREA_RTOL))
-    probs.add("triangles above the area bound", [
+    probs.add("triangles above the area bound", (
         f"triangle {int(idx[k])} {m.T[idx[k]].tolist()} has area {area[k]:.17g} > {max_area}"
         for k in bad
-    ])
+    ), len(bad))
 
 
 def _check_markers(m: _Mesh, result, e: _Edges, probs: _Problems):

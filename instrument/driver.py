@@ -153,7 +153,7 @@ def _assemble(ms: Mesher, inp: dict, o: Options) -> Result:
     if o.j:
         keep = np.zeros(nv, dtype=bool)
         keep[corners.ravel()] = True
-        if tris.size == 0:
+        if ms.collinear:  # no triangle ever existed: only duplicates are unused
             keep[: ms.n_input] = ms.dup < 0
         new_id = np.cumsum(keep) - 1
     else:

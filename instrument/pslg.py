@@ -35,6 +35,13 @@ class Mesher:
     region_area: np.ndarray | None = None  # per triangle slot, with a bare -a
 
     @property
+    def collinear(self) -> bool:
+        """True if the input vertices had no triangulation at all."""
+        return self.n_triangles_initial == 0
+
+    n_triangles_initial: int = 0
+
+    @property
     def n_vertices(self) -> int:
         return int(self.m.size[S_NVERT])
 
@@ -80,6 +87,7 @@ def start(xy: np.ndarray, markers: np.ndarray, work: np.ndarray, seed: int, spar
         parent=np.full((cap, 3), -1.0),
         segs=cdt.new_segs(max(16, 2 * spare_vertices)),
         vtri=np.full(cap, -1, dtype=np.int64),
+        n_triangles_initial=int(m.size[3]),
     )
     return mesher
 
@@ -146,14 +154,20 @@ def carve(ms: Mesher, o: Options, holes: np.ndarray | None, regions: np.ndarray 
         found_regions = np.zeros((len(regions), 2), dtype=np.int64)
         locate_points(m, ms.work, np.ascontiguousarray(regions[:, :2]), lo, hi, found_regions, ms.state)
     infected = np.zeros(slots, dtype=np.uint8)
+    queue = np.zeros(slots, dtype=np.int64)
+    n = 0
     if not o.c:
-        infect_hull(m, ms.segs, ms.vmark, infected)
+        n = infect_hull(m, ms.segs, ms.vmark, infected, queue)
     if holes is not None and len(holes) and not o.O:
         found = np.zeros((len(holes), 2), dtype=np.int64)
         locate_points(m, ms.work, np.ascontiguousarray(holes), lo, hi, found, ms.state)
-        infected[found[found[:, 0] >= 0, 0]] = 1
-    stack = np.zeros(slots, dtype=np.int64)
-    plague(m, ms.work, ms.segs, ms.vmark, infected, stack)
+        for t in found[found[:, 0] >= 0, 0]:
+            if not infected[t]:
+                infected[t] = 1
+                queue[n] = t
+                n += 1
+    plague(m, ms.work, ms.segs, ms.vmark, infected, queue, n)
+    stack = queue
     if found_regions is not None:
         seen = np.zeros(slots, dtype=np.int64)
         if o.A:

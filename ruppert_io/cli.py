@@ -1,0 +1,765 @@
+"""The ``ruppert`` command line: Triangle 1.6's interface, plus a few long options.
+
+    ruppert [-switches] input_file[.node|.poly|.ele|.area] [--long-options]
+
+Triangle-style switch groups (``-pq30a0.1``, ``-p -q30``, before or after the file
+name) are parsed with ``instrument.switches.parse``; the long options with argparse.
+This module is the only place that turns exceptions into exit statuses: every
+failure is one ``Error:`` line on stderr and exit status 1 (130 when interrupted).
+"""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import csv
+import dataclasses
+import inspect
+import io
+import json
+import os
+import re
+import sys
+import time
+from collections.abc import Mapping, Sequence
+from pathlib import Path
+from typing import Any, TextIO
+
+import numpy as np
+
+from . import naming, stats
+from .api import read_set, write
+from .errors import FormatError
+from .info import Info
+
+# --------------------------------------------------------------------------
+# Texts
+# --------------------------------------------------------------------------
+
+USAGE = "ruppert [-prq__a__uAcDjevngBPNEIOXzo_YS__iFlsCQVh] input_file"
+
+SHORT_HELP = f"""{USAGE}
+    -p  Triangulates a Planar Straight Line Graph (.poly file).
+    -r  Refines a previously generated mesh.
+    -q  Quality mesh generation.  A minimum angle may be specified.
+    -a  Applies a maximum triangle area constraint.
+    -u  Applies a user-defined triangle constraint.
+    -A  Applies attributes to identify triangles in certain regions.
+    -c  Encloses the convex hull with segments.
+    -D  Conforming Delaunay:  all triangles are truly Delaunay.
+    -j  Jettison unused vertices from output .node file.
+    -e  Generates an edge list.
+    -v  Generates a Voronoi diagram.
+    -n  Generates a list of triangle neighbors.
+    -g  Generates an .off file for Geomview.
+    -B  Suppresses output of boundary information.
+    -P  Suppresses output of .poly file.
+    -N  Suppresses output of .node file.
+    -E  Suppresses output of .ele file.
+    -I  Suppresses mesh iteration numbers.
+    -O  Ignores holes in .poly file.
+    -X  Suppresses use of exact arithmetic.
+    -z  Numbers all items starting from zero (rather than one).
+    -o2 Generates second-order subparametric elements.
+    -Y  Suppresses boundary segment splitting.
+    -S  Specifies maximum number of added Steiner points.
+    -i  Uses incremental method, rather than divide-and-conquer.
+    -F  Uses Fortune's sweepline algorithm, rather than d-and-c.
+    -l  Uses vertical cuts only, rather than alternating cuts.
+    -s  Force segments into mesh by splitting (instead of using CDT).
+    -C  Check consistency of final mesh.
+    -Q  Quiet:  No terminal output except errors.
+    -V  Verbose:  Detailed information on what I'm doing.
+    -h  Help:  Detailed instructions for ruppert.
+Long options: --strategy NAME  --steiner offcenter|circumcenter  --seed N
+    --work-json PATH  --trace PATH  --format FMT[,FMT...]  --progress
+"""
+
+LONG_HELP = f"""ruppert: a two-dimensional quality mesh generator and Delaunay triangulator
+that behaves like J. R. Shewchuk's Triangle 1.6 and counts its own work.
+
+Usage:
+    {USAGE} [long options]
+
+The input is a set of points (file.node), a planar straight line graph
+(file.poly), or an earlier mesh to refine (file.node + file.ele, with -r).
+Naming file.poly turns on -p, file.ele turns on -r, and file.area turns on -r
+with per-triangle area bounds read from file.area.  Output goes to the input's
+name with the next iteration number: A.poly gives A.1.node, A.1.ele, A.1.poly;
+refining A.1 gives A.2.*.  Files are numbered from 0 or 1, as the input is.
+
+Switches are single letters; they may be grouped (-pq30a0.1) or separate
+(-p -q30 -a0.1), and may come before or after the file name.  Numbers follow
+q, a, S and o directly.  Unlike Triangle, the numbers after q and a may carry an
+exponent: -a1e-4 is a maximum area of 0.0001.
+
+  What to triangulate
+    -p      Read a planar straight line graph (.poly): vertices, segments,
+            holes and regional attributes/area bounds; build a constrained
+            Delaunay triangulation (conforming with -q, -a, -u, -D or -s).
+    -r      Refine the mesh in file.node and file.ele (and file.poly with -p,
+            file.area with a bare -a).  Cannot be combined with -I.
+    -c      Also enclose the convex hull with segments.
+    -O      Ignore the holes listed in the .poly file.
+
+  Quality
+    -q[deg] Add Steiner points until no angle is below deg (default 20).
+            Termination is guaranteed up to about 28.6 degrees.
+    -a[A]   Bound triangle areas by A; a bare -a uses the area bounds of the
+            .poly regions (or of the .area file with -r).  Both may be given.
+    -u      Refine triangles that fail the user test (Triangle's stock test).
+    -D      Conforming Delaunay: every triangle is truly Delaunay.
+    -Y      Do not split boundary segments; -YY: do not split any segment.
+    -S[n]   Add at most n Steiner points (no number: none).
+    -s      Recover segments by splitting them rather than by flipping.
+    -X      Do not use exact arithmetic (for comparison only).
+    -i -F -l  Triangle's choice of Delaunay algorithm (accepted).
+
+  Output
+    -A      Give each triangle the attribute of the region it lies in.
+    -j      Leave unused vertices (duplicates, eaten vertices) out of .node.
+    -e      Write the edges (.edge).
+    -v      Write the Voronoi diagram (.v.node, .v.edge).
+    -n      Write the triangles' neighbours (.neigh).
+    -g      Write a Geomview file (.off).
+    -o2     Write six-node (second-order) triangles.
+    -B      Write no boundary markers.
+    -P -N -E  Do not write the .poly / .node / .ele file.
+    -I      Write to the input's name without iteration number (the .node and
+            .poly files that were read are not overwritten).
+    -z      Number items from 0 when the input does not say.
+
+  Console
+    -Q      Quiet: print only warnings' absence and errors.
+    -V      Verbose: also print the quality statistics (areas, edges, aspect
+            ratios, angle histograms), Triangle's algorithmic statistics, and
+            every work counter of the engine ("Work statistics").
+    -C      Check the final mesh: consistency and the Delaunay property.
+    -h      Print this text.
+
+Long options (ruppert's own):
+    --strategy NAME     Order in which bad triangles are split (default
+                        "triangle", Triangle 1.6's order).
+    --steiner offcenter|circumcenter
+                        Where a bad triangle is split (default offcenter).
+    --seed N            Seed of randomised strategies (default 0).
+    --work-json PATH    Write the work counters as JSON.
+    --trace PATH        Write one CSV row per vertex insertion.
+    --format FMT        Also write the mesh with meshio, e.g. vtu, gmsh22,
+                        xdmf, vtk (comma-separated for several).  "msh" means
+                        Gmsh 2.2 here (meshio would take it as ANSYS).
+    --progress          Show a progress display on a terminal.
+
+Exit status: 0 on success, 1 on an error (one line starting with "Error:"),
+130 when interrupted.
+"""
+
+#: What -C prints (Triangle's sentences; its exact -C output is not in our reference).
+CHECK_TEXT = {
+    "consistency": "Checking consistency of mesh...",
+    "consistent": "  In my considered opinion, the mesh is fine.",
+    "delaunay": "Checking Delaunay property of mesh...",
+    "is_delaunay": "  By virtue of my perceptive intelligence, I declare the mesh Delaunay.",
+    "problem": "  !! !! {}",
+    "count": "  !! !! !! !! Precisely {} problem{} found.",
+}
+
+#: Header of a --trace file when the engine returned no trace.
+TRACE_HEADER = ("step", "kind", "x", "y", "triangles_created")
+
+#: Keys of the input dict the engine accepts.
+ENGINE_KEYS = (
+    "vertices",
+    "vertex_markers",
+    "vertex_attributes",
+    "segments",
+    "segment_markers",
+    "holes",
+    "regions",
+    "triangles",
+    "triangle_attributes",
+    "triangle_max_area",
+)
+
+#: meshio formats whose extension meshio's table does not give.
+FORMAT_EXTENSIONS = {"gmsh22": ".msh", "gmsh": ".msh", "vtk42": ".vtk", "vtk51": ".vtk"}
+
+_LONG_WITH_VALUE = ("--strategy", "--steiner", "--seed", "--work-json", "--trace", "--format")
+_LONG_FLAGS = ("--progress", "--help")
+
+
+class CliError(Exception):
+    """A failure reported as one ``Error:`` line and exit status 1."""
+
+
+class _ArgumentParser(argparse.ArgumentParser):
+    def error(self, message: str):  # argparse would print usage and exit 2
+        raise CliError(message)
+
+
+def _long_parser() -> argparse.ArgumentParser:
+    p = _ArgumentParser(prog="ruppert", add_help=False, allow_abbrev=False)
+    p.add_argument("--strategy", default="triangle")
+    p.add_argument("--steiner", default="offcenter", choices=("offcenter", "circumcenter"))
+    p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--work-json", dest="work_json", default=None)
+    p.add_argument("--trace", default=None)
+    p.add_argument("--format", dest="formats", action="append", default=[])
+    p.add_argument("--progress", action="store_true")
+    p.add_argument("--help", action="store_true")
+    return p
+
+
+# --------------------------------------------------------------------------
+# Entry point
+# --------------------------------------------------------------------------
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Run ruppert with ``argv`` (default: ``sys.argv[1:]``); return the exit status."""
+    argv = list(sys.argv[1:] if argv is None else argv)
+    try:
+        return _run(argv, sys.stdout)
+    except CliError as exc:
+        _error(str(exc))
+        return 1
+    except KeyboardInterrupt:
+        print("Error: interrupted", file=sys.stderr)
+        return 130
+    except MemoryError:
+        _error("Out of memory.")
+        return 1
+    except Exception as exc:  # a bug: still one line, never a traceback
+        if os.environ.get("RUPPERT_DEBUG"):
+            raise
+        _error(f"internal error ({type(exc).__name__}): {exc}")
+        return 1
+
+
+def _error(message: str) -> None:
+    message = " ".join(str(message).split()) or "unknown error"
+    print(f"Error:  {message}", file=sys.stderr)
+
+
+@dataclasses.dataclass
+class _Command:
+    switches: str  # the switch text, one leading dash removed per group
+    file: str | None
+    long: argparse.Namespace
+    argv: list[str]
+
+
+def _split(argv: list[str]) -> _Command:
+    groups, files, long_tokens = [], [], []
+    it = iter(argv)
+    only_files = False
+    for arg in it:
+        if only_files:
+            files.append(arg)
+        elif arg == "--":
+            only_files = True
+        elif arg.startswith("--"):
+            name = arg.split("=", 1)[0]
+            if name in _LONG_WITH_VALUE and "=" not in arg:
+                value = next(it, None)
+                if value is None:
+                    raise CliError(f"argument {name}: expected one argument")
+                arg = f"{name}={value}"
+            long_tokens.append(arg)
+        elif arg.startswith("-"):
+            groups.append(arg[1:])
+        else:
+            files.append(arg)
+    long = _long_parser().parse_args(long_tokens)
+    # A space between groups keeps "-q -30" from reading as "-q30", as in Triangle.
+    return _Command(" ".join(groups), files[-1] if files else None, long, argv)
+
+
+# --------------------------------------------------------------------------
+# The run
+# --------------------------------------------------------------------------
+
+
+def _run(argv: list[str], out: TextIO) -> int:
+    from instrument.switches import SwitchError, parse
+
+    cmd = _split(argv)
+    help_at = re.search(r"[hH?]", cmd.switches)
+    if help_at or cmd.long.help:
+        if help_at:  # Triangle stops parsing at h: earlier switches may still fail
+            try:
+                parse(cmd.switches[: help_at.start()], library=True)
+            except SwitchError as exc:
+                raise CliError(str(exc)) from None
+        out.write(LONG_HELP)
+        return 0
+    if cmd.file is None:
+        out.write(SHORT_HELP)
+        return 0
+
+    # File-name rules (reference §1.1), applied in this order.
+    base, implied = cmd.file, ""
+    for suffix, letters in ((".node", ""), (".poly", "p"), (".ele", "r"), (".area", "ra ")):
+        if base.endswith(suffix):
+            base = base[: -len(suffix)]
+            implied += letters
+    try:
+        o = parse(f"{implied} {cmd.switches}", library=True)
+    except SwitchError as exc:
+        raise CliError(str(exc)) from None
+    if o.r and o.I:
+        raise CliError("You cannot use the -I switch when refining a triangulation.")
+    formats = _meshio_formats(cmd.long.formats)
+    engine_kwargs = _engine_kwargs(cmd.long)
+    quiet = o.Q
+    say = (lambda line="": None) if quiet else (lambda line="": print(line, file=out))
+    warn = (lambda line: None) if quiet else (lambda line: print(line, file=sys.stderr))
+
+    start = time.perf_counter()
+    data, info = _read_input(o, base)
+    for path in info.files:
+        say(f"Opening {path}.")
+    for line in info.warnings:
+        warn(line)
+    nvertices = len(np.asarray(data.get("vertices", np.zeros((0, 2)))).reshape(-1, 2))
+    if nvertices < 3:
+        raise CliError("Input must have at least three input vertices.")
+    if o.j and o.N:
+        warn("Warning:  -j and -N switches are somewhat incompatible.")
+        warn("  If any vertices are jettisoned, you will need the output .node file to use the mesh.")
+
+    result, engine_ms = _triangulate(data, o, cmd.long, engine_kwargs, quiet)
+    ntriangles = len(stats._triangles(result))
+    _phase_lines(o, say, ntriangles)
+    if not o.r:
+        for line in _duplicate_warnings(data["vertices"]):
+            warn(line)
+    say()
+
+    # Output files (reference §2.10), in Triangle's order.
+    t_out = time.perf_counter()
+    outbase = naming.output_base(base, no_iteration=o.I)
+    mesh = _output_mesh(result, data, o)
+    node_read = info.vertices_from is not None and Path(info.vertices_from).suffix == ".node"
+    kinds, lines = _choose_outputs(o, outbase, node_read)
+    voronoi = _voronoi(mesh) if o.v else None
+    generated_by = " ".join(["ruppert", *argv])
+    try:
+        write(
+            outbase,
+            _with_empty_arrays(mesh, kinds, o.order),
+            first_index=info.first_index,
+            markers=not o.B,
+            kinds=kinds,
+            generated_by=generated_by,
+            voronoi=voronoi,
+        )
+    except OSError as exc:
+        raise CliError(f"Cannot create file {exc.filename}.") from None
+    for line in lines:
+        say(line)
+    for fmt, ext, note in formats:
+        if note:
+            warn(note)
+        path = f"{outbase}{ext}"
+        _write_meshio(path, mesh, fmt, o)
+        say(f"Writing {path}.")
+    if cmd.long.work_json:
+        _write_file(cmd.long.work_json, json.dumps(result.work, indent=2) + "\n")
+        say(f"Writing {cmd.long.work_json}.")
+    if cmd.long.trace:
+        _write_trace(cmd.long.trace, getattr(result, "trace", None))
+        say(f"Writing {cmd.long.trace}.")
+    if o.V:
+        now = time.perf_counter()
+        say()
+        say(f"Engine milliseconds:  {round(engine_ms)}")
+        say(f"Output milliseconds:  {round(1000 * (now - t_out))}")
+        say(f"Total running milliseconds:  {round(1000 * (now - start))}")
+
+    if not quiet:
+        out.write(_statistics(o, data, info, mesh, result))
+    if o.C:
+        _check(mesh, out, quiet)
+    return 0
+
+
+def _engine_kwargs(long: argparse.Namespace) -> dict[str, Any]:
+    import instrument
+
+    kwargs: dict[str, Any] = {"strategy": long.strategy, "seed": long.seed}
+    listing = getattr(instrument, "strategies", None)
+    if callable(listing):
+        names = list(listing())
+        if names and long.strategy not in names:
+            raise CliError(f"Unknown strategy {long.strategy!r}; choose from {', '.join(names)}.")
+    if long.steiner != "offcenter":
+        if "steiner" not in inspect.signature(instrument.triangulate).parameters:
+            raise CliError(f"--steiner {long.steiner} is not supported by the engine yet.")
+        kwargs["steiner"] = long.steiner
+    if long.trace:
+        kwargs["trace"] = True
+    return kwargs
+
+
+def _read_input(o, base: str) -> tuple[dict[str, np.ndarray], Info]:
+    """Read the files Triangle reads for these switches (reference §1.3, §2)."""
+    files = {"poly": Path(f"{base}.poly")} if o.p else {"node": Path(f"{base}.node")}
+    if o.r:
+        files["ele"] = Path(f"{base}.ele")
+        if o.var_area:
+            files["area"] = Path(f"{base}.area")
+    first = 0 if o.z else 1
+    info = Info(first_index=first)
+    try:
+        data = read_set(files, default_first_index=first, info=info)
+    except FormatError as exc:
+        cause = exc.__cause__
+        if isinstance(cause, OSError) and cause.filename:  # a .poly's missing .node
+            raise CliError(f"Cannot access file {cause.filename}.") from None
+        raise CliError(str(exc)) from None
+    except OSError as exc:
+        raise CliError(f"Cannot access file {exc.filename or base}.") from None
+    return data, info
+
+
+def engine_switches(o) -> str:
+    """The library-mode switch string for ``instrument.triangulate``.
+
+    Output-only and console switches (B, P, N, E, I, g, z, V, C) are left out: the
+    command line decides what to write and prints the statistics itself, which
+    needs the whole mesh.  Numbers come last, after all letters, so that no letter
+    can be read as part of a number.
+    """
+    letters = "Q" + "".join(ch for ch in "pruAcDjevnXOiFlswW" if getattr(o, ch))
+    letters += "Y" * o.Y
+    if o.order == 2:
+        letters += "o2"
+    if o.q:
+        letters += f"q{o.min_angle!r}"
+    if o.max_area > 0:
+        letters += f"a{o.max_area!r}"
+    if o.var_area:
+        letters += "a"
+    if o.S >= 0:
+        letters += f"S{o.S}"
+    return letters
+
+
+def _triangulate(data, o, long, kwargs, quiet):
+    import instrument
+
+    tri = {}
+    for key in ENGINE_KEYS:
+        value = data.get(key)
+        if value is not None and np.size(value):
+            tri[key] = value
+    opts = engine_switches(o)
+    t0 = time.perf_counter()
+    try:
+        if long.progress and not quiet and sys.stderr.isatty():
+            from rich.console import Console
+
+            with Console(stderr=True).status("Meshing..."):
+                result = instrument.triangulate(tri, opts, **kwargs)
+        else:
+            result = instrument.triangulate(tri, opts, **kwargs)
+    except NotImplementedError as exc:
+        raise CliError(str(exc) or "not implemented yet") from None
+    except (ValueError, RuntimeError, KeyError) as exc:
+        raise CliError(str(exc).strip("'\"")) from None
+    return result, 1000 * (time.perf_counter() - t0)
+
+
+def _phase_lines(o, say, ntriangles: int) -> None:
+    """Triangle's phase lines (reference §3.1), without its timing lines."""
+    if o.r:
+        say("Reconstructing mesh.")
+    else:
+        # The engine builds the triangulation by incremental insertion.
+        say("Constructing Delaunay triangulation by incremental method.")
+    if o.uses_segments and not o.r:
+        say("Recovering segments in Delaunay triangulation.")
+    if o.p and not o.r and not (o.O and o.c):
+        say("Removing unwanted triangles.")
+    if o.quality and ntriangles > 0:
+        say("Adding Steiner points to enforce quality.")
+    if o.order == 2:
+        say("Adding vertices for second-order triangles.")
+
+
+def _duplicate_warnings(vertices) -> list[str]:
+    xy = np.asarray(vertices, dtype=np.float64).reshape(-1, 2)
+    if len(xy) < 2:
+        return []
+    order = np.lexsort((xy[:, 1], xy[:, 0]))
+    s = xy[order]
+    dup = np.flatnonzero(np.all(s[1:] == s[:-1], axis=1)) + 1
+    return [
+        "Warning:  A duplicate vertex at (%.12g, %.12g) appeared and was ignored." % tuple(s[i])
+        for i in dup
+    ]
+
+
+def _output_mesh(result, data, o) -> dict[str, Any]:
+    """The engine's result, completed with what Triangle writes but the engine may omit."""
+    mesh = dict(result)
+    if o.p:
+        for key in ("holes", "regions"):
+            if key not in mesh and data.get(key) is not None and np.size(data[key]):
+                mesh[key] = data[key]
+    if o.B:
+        for key in ("vertex_markers", "segment_markers", "edge_markers"):
+            mesh.pop(key, None)
+    if not (o.p or o.c):
+        mesh.pop("segments", None)  # Triangle writes none, and counts hull subsegments
+    return mesh
+
+
+def _with_empty_arrays(mesh: Mapping[str, Any], kinds: list[str], order: int) -> dict[str, Any]:
+    """``mesh`` with empty arrays for the files to write whose data the engine left out."""
+    needs = {
+        "ele": [("triangles", (0, 6 if order == 2 else 3), np.int32)],
+        "off": [("triangles", (0, 6 if order == 2 else 3), np.int32)],
+        "poly": [("segments", (0, 2), np.int32), ("holes", (0, 2), np.float64)],
+        "edge": [("edges", (0, 2), np.int32)],
+        "neigh": [("neighbors", (0, 3), np.int32)],
+    }
+    out = dict(mesh)
+    for kind in kinds:
+        for key, shape, dtype in needs.get(kind, ()):
+            if out.get(key) is None:
+                out[key] = np.zeros(shape, dtype=dtype)
+    return out
+
+
+def _choose_outputs(o, outbase: str, node_read: bool) -> tuple[list[str], list[str]]:
+    """Which files to write, and the console lines about them, in Triangle's order."""
+    names = naming.output_files(outbase)
+    kinds, lines = [], []
+
+    def take(kind: str) -> None:
+        kinds.append(kind)
+        lines.append(f"Writing {names[kind]}.")
+
+    if o.N or (o.I and node_read):
+        lines.append("NOT writing a .node file.")
+    else:
+        take("node")
+    if o.E:
+        lines.append("NOT writing an .ele file.")
+    else:
+        take("ele")
+    if o.p or o.c:
+        if o.P or o.I:
+            lines.append("NOT writing a .poly file.")
+        else:
+            take("poly")
+    for switch, kind in (("g", "off"), ("e", "edge"), ("v", "v.node"), ("v", "v.edge"), ("n", "neigh")):
+        if getattr(o, switch):
+            take(kind)
+    return kinds, lines
+
+
+def _statistics(o, data, info: Info, mesh, result) -> str:
+    counts = stats.mesh_counts(mesh, refine=o.r)
+    skipped = sum(1 for w in info.warnings if re.search(r"\bsegment \d+\b", w))
+    text = stats.statistics_block(
+        counts,
+        input_vertices=len(np.asarray(data["vertices"]).reshape(-1, 2)),
+        input_triangles=len(stats._triangles(data)),
+        input_segments=len(np.asarray(data.get("segments", np.zeros((0, 2)))).reshape(-1, 2))
+        + skipped,
+        input_holes=len(np.asarray(data.get("holes", np.zeros((0, 2)))).reshape(-1, 2)),
+        poly=o.p,
+        refine=o.r,
+    )
+    if o.V:
+        work = dict(getattr(result, "work", {}) or {})
+        text += stats.format_quality(stats.quality_statistics(mesh))
+        text += stats.format_algorithmic(work, counts.triangles)
+        text += stats.format_work(work)
+    return text
+
+
+def _check(mesh, out: TextIO, quiet: bool) -> None:
+    """-C: the mesh checker's verdict, in Triangle's words."""
+    from instrument.check import check_mesh
+
+    def report(header: str, fine: str, problems: list[str]) -> None:
+        if not quiet:
+            print(CHECK_TEXT[header], file=out)
+        if problems:
+            for p in problems:
+                print(CHECK_TEXT["problem"].format(p), file=out)
+            n = len(problems)
+            print(CHECK_TEXT["count"].format(n, "" if n == 1 else "s"), file=out)
+        elif not quiet:
+            print(CHECK_TEXT[fine], file=out)
+
+    consistency = check_mesh(mesh, delaunay=False)
+    everything = check_mesh(mesh)
+    report("consistency", "consistent", consistency)
+    report("delaunay", "is_delaunay", [p for p in everything if p not in consistency])
+
+
+# --------------------------------------------------------------------------
+# Extra outputs
+# --------------------------------------------------------------------------
+
+
+def _meshio_formats(requested: list[str]) -> list[tuple[str, str, str | None]]:
+    """(meshio format, extension, warning) for each --format value."""
+    import meshio
+    from meshio import _helpers
+
+    chosen = []
+    for fmt in (f.strip() for value in requested for f in value.split(",")):
+        if not fmt:
+            continue
+        note = None
+        if fmt.lower() == "msh":
+            note = ("Warning:  meshio's format 'msh' is ANSYS; writing Gmsh 2.2 "
+                    "('gmsh22') instead.")
+            fmt = "gmsh22"
+        if fmt not in _helpers._writer_map:
+            known = ", ".join(sorted(_helpers._writer_map))
+            raise CliError(f"Unknown output format {fmt!r}; meshio writes {known}.")
+        ext = FORMAT_EXTENSIONS.get(fmt)
+        if ext is None:
+            ext = next(
+                (e for e, fmts in meshio.extension_to_filetypes.items() if fmt in fmts), f".{fmt}"
+            )
+        chosen.append((fmt, ext, note))
+    return chosen
+
+
+def _write_meshio(path: str, mesh: Mapping[str, Any], fmt: str, o) -> None:
+    import meshio
+
+    from .meshio_plugin import to_meshio
+
+    try:
+        m = to_meshio(mesh, pad_3d=fmt != "triangle")
+        if fmt.startswith("gmsh"):  # Gmsh wants tags; without them meshio warns
+            for tag in ("gmsh:physical", "gmsh:geometrical"):
+                m.cell_data.setdefault(tag, [np.zeros(len(b.data), dtype=int) for b in m.cells])
+        with contextlib.redirect_stderr(io.StringIO()) if o.Q else contextlib.nullcontext():
+            meshio.write(path, m, file_format=fmt)
+    except OSError as exc:
+        raise CliError(f"Cannot create file {exc.filename or path}.") from None
+    except Exception as exc:  # meshio writers raise all sorts
+        raise CliError(f"Cannot write {path} as {fmt}: {exc}") from None
+
+
+def _write_file(path: str, text: str) -> None:
+    try:
+        Path(path).write_text(text)
+    except OSError as exc:
+        raise CliError(f"Cannot create file {exc.filename or path}.") from None
+
+
+def _trace_table(trace) -> tuple[list[str], list[list[Any]]]:
+    """Header and rows of a trace, whatever tabular shape the engine gives."""
+    if trace is None:
+        return list(TRACE_HEADER), []
+    if isinstance(trace, np.ndarray):
+        if trace.dtype.names:
+            return list(trace.dtype.names), [list(r) for r in trace.tolist()]
+        a = trace.reshape(len(trace), -1)
+        return [f"col{i}" for i in range(a.shape[1])], a.tolist()
+    if isinstance(trace, Mapping):  # columns
+        header = list(trace)
+        cols = [np.asarray(trace[k]).tolist() for k in header]
+        return header, [list(r) for r in zip(*cols)]
+    rows = list(trace)
+    if not rows:
+        return list(TRACE_HEADER), []
+    first = rows[0]
+    if isinstance(first, Mapping):
+        header = list(first)
+        return header, [[r.get(k) for k in header] for r in rows]
+    if dataclasses.is_dataclass(first):
+        header = [f.name for f in dataclasses.fields(first)]
+        return header, [[getattr(r, k) for k in header] for r in rows]
+    if hasattr(first, "_fields"):
+        return list(first._fields), [list(r) for r in rows]
+    rows = [list(r) if isinstance(r, (list, tuple, np.ndarray)) else [r] for r in rows]
+    return [f"col{i}" for i in range(len(rows[0]))], rows
+
+
+def _write_trace(path: str, trace) -> None:
+    if hasattr(trace, "to_csv"):  # a DataFrame
+        try:
+            trace.to_csv(path, index=False)
+            return
+        except OSError as exc:
+            raise CliError(f"Cannot create file {exc.filename or path}.") from None
+    header, rows = _trace_table(trace)
+    try:
+        with open(path, "w", newline="") as f:
+            w = csv.writer(f)
+            w.writerow(header)
+            w.writerows(rows)
+    except OSError as exc:
+        raise CliError(f"Cannot create file {exc.filename or path}.") from None
+
+
+def _voronoi(mesh: Mapping[str, Any]) -> dict[str, np.ndarray]:
+    """Triangle's Voronoi diagram of a mesh (reference §2.8), as ``write`` wants it.
+
+    Voronoi vertex i is the circumcenter of triangle i, computed with Triangle's
+    formula (org, dest, apex = the .ele columns); vertex attributes are
+    interpolated there.  Edges are listed triangle by triangle, edges (c0, c1),
+    (c1, c2), (c2, c0), each once (when the neighbour is absent or comes later);
+    a hull edge org -> dest gives a ray from the circumcenter in the direction
+    (dest.y - org.y, org.x - dest.x).
+    """
+    xy = np.asarray(mesh["vertices"], dtype=np.float64).reshape(-1, 2)
+    t = stats._triangles(mesh)[:, :3]
+    m = len(t)
+    torg, tdest, tapex = xy[t[:, 0]], xy[t[:, 1]], xy[t[:, 2]]
+    with np.errstate(all="ignore"):
+        xdo, ydo = (tdest - torg).T
+        xao, yao = (tapex - torg).T
+        dodist = xdo * xdo + ydo * ydo
+        aodist = xao * xao + yao * yao
+        denominator = 0.5 / (xdo * yao - ydo * xao)
+        dx = (yao * dodist - ydo * aodist) * denominator
+        dy = (xdo * aodist - xao * dodist) * denominator
+        centers = np.column_stack([torg[:, 0] + dx, torg[:, 1] + dy])
+        xi = (yao * dx - xao * dy) * (2.0 * denominator)
+        eta = (xdo * dy - ydo * dx) * (2.0 * denominator)
+    vor: dict[str, np.ndarray] = {"vertices": centers}
+    attr = mesh.get("vertex_attributes")
+    if attr is not None and np.size(attr):
+        a = np.asarray(attr, dtype=np.float64).reshape(len(xy), -1)
+        ao, ad, aa = a[t[:, 0]], a[t[:, 1]], a[t[:, 2]]
+        vor["vertex_attributes"] = ao + xi[:, None] * (ad - ao) + eta[:, None] * (aa - ao)
+    # Directed edges (org, dest) in Triangle's order, and their neighbours.
+    org = t[:, [0, 1, 2]].ravel()
+    dest = t[:, [1, 2, 0]].ravel()
+    owner = np.repeat(np.arange(m), 3)
+    n = len(xy)
+    key = org.astype(np.int64) * n + dest
+    rev = dest.astype(np.int64) * n + org
+    order = np.argsort(key, kind="stable")
+    pos = np.searchsorted(key[order], rev)
+    pos = np.minimum(pos, max(len(key) - 1, 0))
+    found = (key[order][pos] == rev) if len(key) else np.zeros(0, dtype=bool)
+    neighbour = np.where(found, owner[order][pos] if len(key) else owner, -1)
+    keep = (neighbour < 0) | (neighbour > owner)
+    edges = np.column_stack([owner[keep], neighbour[keep]]).astype(np.int64)
+    normals = np.zeros((len(edges), 2))
+    ray = neighbour[keep] < 0
+    o_xy, d_xy = xy[org[keep][ray]], xy[dest[keep][ray]]
+    normals[ray, 0] = d_xy[:, 1] - o_xy[:, 1]
+    normals[ray, 1] = o_xy[:, 0] - d_xy[:, 0]
+    vor["edges"] = edges
+    if ray.any():
+        vor["normals"] = normals
+    return vor
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
