@@ -352,6 +352,16 @@ def _split_at_crossing(m, work, segs, vmark, vtri, a, b, c, stack, parent):
         return right
     if px == xy[left, 0] and py == xy[left, 1]:
         return left
+    # A crossing that rounds onto the piece's own end would repeat the piece
+    # for ever: step along the crossed subsegment, towards its middle, to the
+    # nearest distinct point (the piece then gets a tiny first or last part).
+    step = 2.0**-52 * (1.0 if t < 0.5 else -1.0)
+    k = 1
+    while ((px == xy[a, 0] and py == xy[a, 1]) or (px == xy[b, 0] and py == xy[b, 1])) and k < 2**40:
+        tk = t + k * step
+        px = xy[right, 0] + tk * tx
+        py = xy[right, 1] + tk * ty
+        k *= 2
     half = new_record(segs, segs.marker[r], segs.source[r])
     if half < 0:
         return -1
@@ -412,6 +422,8 @@ def insert_segments(m, work, segs, pieces, in_marker, vmark, vtri, buf, parent, 
             p = _split_at_crossing(m, work, segs, vmark, vtri, a, b, c, buf[7 * (buf.shape[0] // 10):], parent)
             if p < 0:
                 return NEED_ROOM
+            if p == a or p == b:  # the crossing rounded onto the piece's own end: no progress
+                return FAILED
             pieces[sp, 0] = p  # p -> b later, a -> p first
             pieces[sp + 1, 0] = a
             pieces[sp + 1, 1] = p

@@ -48,6 +48,23 @@ If it returns no problem, the triangles (first three columns of
 
 Vertices that no triangle uses are allowed (Triangle outputs duplicate and
 eaten input vertices).
+
+Also checked:
+
+* every row of ``segments`` (the subsegments) is an edge of some triangle;
+* constrained Delaunay (``delaunay=True``): for every edge shared by two
+  triangles that is not a subsegment, the opposite apex is not strictly inside
+  the other triangle's circumcircle (exact incircle; cocircular is fine);
+* with ``pslg``: the output vertices lying on an input segment (exactly, or
+  within ON_SEGMENT_RTOL: Triangle leaves split points up to ~1 ulp off the
+  line) cut it into pieces, and every piece is covered by collinear output
+  subsegments, or lies outside the mesh (Triangle deletes subsegments eaten
+  with holes and the exterior).  Pass ``pslg`` only when the output has
+  segments (not with ``-P``);
+* ``min_angle``: see ``quality_report`` for the exemptions;
+* ``max_area``: area <= max_area * (1 + 1e-12);
+* ``markers``: lengths of the marker and attribute arrays, and nonzero
+  markers on boundary subsegments and their endpoints (reference 2.12).
 """
 
 from __future__ import annotations
@@ -77,8 +94,8 @@ SMALL_INPUT_ANGLE = 60.0
 ANGLE_RTOL = 1e-9
 #: Relative tolerance of the area bound.
 AREA_RTOL = 1e-12
-#: A Steiner vertex counts as lying on an input segment if it is exactly on
-#: it, or if its distance to the segment's line is at most this times the
+#: A vertex counts as lying on a segment if it is exactly on it, or if its
+#: distance to the segment's line is at most this times (up to a factor 2) the
 #: largest absolute coordinate involved.  Triangle moves split points onto the
 #: line only once in floating point, so they are typically off by <= ~1 ulp.
 ON_SEGMENT_RTOL = 2.0**-40
@@ -596,6 +613,32 @@ def _open_segment_meets_triangle(p, q, a, b, c):
     return ~sep & ~only_end
 
 
+def _segments_meet_triangles(m: _Mesh, pa, pb, owner=None):
+    """Pairs (good triangle, k) such that the open segment (pa[k], pb[k])
+    meets the closed triangle (exact); ``owner[k]`` is skipped."""
+    none = np.zeros(0, np.int64), np.zeros(0, np.int64)
+    gidx = np.flatnonzero(m.good)
+    if not gidx.size or not len(pa):
+        return none
+    P = m.P[gidx]
+    tbox = np.stack([P[:, :, 0].min(1), P[:, :, 0].max(1), P[:, :, 1].min(1), P[:, :, 1].max(1)], 1)
+    ebox = np.stack([
+        np.minimum(pa[:, 0], pb[:, 0]), np.maximum(pa[:, 0], pb[:, 0]),
+        np.minimum(pa[:, 1], pb[:, 1]), np.maximum(pa[:, 1], pb[:, 1]),
+    ], 1)
+    pt, pe = _box_pairs(tbox, ebox)
+    tri = gidx[pt]
+    if owner is not None:
+        keep = tri != owner[pe]
+        tri, pe = tri[keep], pe[keep]
+    if not len(tri):
+        return none
+    hit = _open_segment_meets_triangle(
+        pa[pe], pb[pe], m.V[m.Tc[tri, 0]], m.V[m.Tc[tri, 1]], m.V[m.Tc[tri, 2]]
+    )
+    return tri[hit], pe[hit]
+
+
 def _check_overlap(m: _Mesh, e: _Edges, probs: _Problems):
     good = m.good
     if not good.any():
@@ -613,29 +656,13 @@ def _check_overlap(m: _Mesh, e: _Edges, probs: _Problems):
     if not len(ea):
         probs.add("overlap", ["the triangles have no boundary edge (impossible for a plane mesh)"])
         return
-    gidx = np.flatnonzero(good)
-    P = m.P[gidx]
-    tbox = np.stack([P[:, :, 0].min(1), P[:, :, 0].max(1), P[:, :, 1].min(1), P[:, :, 1].max(1)], 1)
-    pa, pb = m.V[ea], m.V[eb]
-    ebox = np.stack([
-        np.minimum(pa[:, 0], pb[:, 0]), np.maximum(pa[:, 0], pb[:, 0]),
-        np.minimum(pa[:, 1], pb[:, 1]), np.maximum(pa[:, 1], pb[:, 1]),
-    ], 1)
-    pt, pe = _box_pairs(tbox, ebox)
-    tri = gidx[pt]
-    keep = tri != owner[pe]
-    tri, pe = tri[keep], pe[keep]
-    if not len(tri):
-        return
-    hit = _open_segment_meets_triangle(
-        pa[pe], pb[pe], m.V[m.Tc[tri, 0]], m.V[m.Tc[tri, 1]], m.V[m.Tc[tri, 2]]
-    )
+    tri, pe = _segments_meet_triangles(m, m.V[ea], m.V[eb], owner)
     probs.add("overlapping triangles", (
         f"triangle {int(t)} {m.T[t].tolist()} meets the interior of boundary edge "
         f"({int(ea[k])}, {int(eb[k])}) of triangle {int(owner[k])}: overlapping triangles "
         "or a hanging vertex"
-        for t, k in zip(tri[hit], pe[hit])
-    ), int(hit.sum()))
+        for t, k in zip(tri, pe)
+    ), len(tri))
 
 
 # --------------------------------------------------------------------------
@@ -702,11 +729,14 @@ def _on_line(u, v, x) -> bool:
     """x lies on the line uv: exactly, or within ON_SEGMENT_RTOL."""
     if not all(map(math.isfinite, (*u, *v, *x))):
         return False
-    dx, dy = v[0] - u[0], v[1] - u[1]
-    cross = dx * (x[1] - u[1]) - dy * (x[0] - u[0])
-    length = math.hypot(dx, dy)
     scale = max(abs(u[0]), abs(u[1]), abs(v[0]), abs(v[1]), abs(x[0]), abs(x[1]))
-    if abs(cross) <= ON_SEGMENT_RTOL * scale * length:
+    if scale == 0:
+        return True
+    k = -math.frexp(scale)[1]  # scale by a power of two: coordinates <= 1
+    ux, uy, vx, vy, xx, xy = (math.ldexp(c, k) for c in (*u, *v, *x))
+    dx, dy = vx - ux, vy - uy
+    cross = dx * (xy - uy) - dy * (xx - ux)
+    if abs(cross) <= ON_SEGMENT_RTOL * math.hypot(dx, dy):
         return True
     return orient_exact(u, v, x) == 0
 
@@ -728,65 +758,127 @@ def _subseg_adjacency(m: _Mesh):
     return adj
 
 
-def _pslg_chains(m: _Mesh, pslg, probs: _Problems):
-    """Every input segment must be a chain of collinear output subsegments."""
+def _pslg_chains(m: _Mesh, pslg, probs: _Problems) -> list:
+    """Every input segment, where it meets the mesh, is a chain of subsegments.
+
+    The output vertices (used by triangles or subsegments) lying on an input
+    segment (exactly, or within ON_SEGMENT_RTOL) strictly between its
+    endpoints cut it into pieces.  Each piece must be an output subsegment,
+    or lie outside the mesh (its open segment meets no triangle): Triangle
+    deletes subsegments that are eaten with holes and concavities.
+
+    Returns the input segments as chains (J0, J1, inner output vertices).
+    """
     iv = np.asarray(pslg.get("vertices", np.zeros((0, 2))), dtype=np.float64).reshape(-1, 2)
     iseg = _int_array(pslg.get("segments", np.zeros((0, 2))), 2).reshape(-1, 2)
-    if m.M == 0 or not len(iseg):
-        return
-    adj = _subseg_adjacency(m)
-    Vl = [tuple(p) for p in m.V.tolist()]
+    if not len(iseg):
+        return []
+    okidx = ((iseg >= 0) & (iseg < len(iv))).all(axis=1)
+    probs.add("input segments out of range", (
+        f"input segment {k} {iseg[k].tolist()} has an index out of range"
+        for k in np.flatnonzero(~okidx)
+    ), int((~okidx).sum()))
+    U = np.where(okidx[:, None], iv[np.where(okidx[:, None], iseg, 0)[:, 0]], np.nan)
+    W = np.where(okidx[:, None], iv[np.where(okidx[:, None], iseg, 0)[:, 1]], np.nan)
+    keep = okidx & np.isfinite(U).all(1) & np.isfinite(W).all(1) & (U != W).any(1)
+    segk = np.flatnonzero(keep)
+    if not segk.size or not m.good.any():
+        return []
+    U, W = U[segk], W[segk]
+
+    # Output vertices that matter: used by good triangles or by subsegments.
+    ok, skey = _segment_keys(m)
+    ids = np.unique(np.concatenate([m.Tc[m.good].ravel(), m.S[ok].ravel()]))
+    ids = ids[np.isfinite(m.V[ids]).all(1)]
+    X = m.V[ids]
     where = {}
-    for w in adj:
-        where.setdefault(Vl[w], w)
-    limit = len(m.S) + 1
+    for w, p in zip(ids.tolist(), X.tolist()):
+        where.setdefault(tuple(p), w)
+
+    # Output vertices strictly inside each input segment.
+    pbox = np.stack([X[:, 0], X[:, 0], X[:, 1], X[:, 1]], 1)
+    sbox = np.stack([np.minimum(U[:, 0], W[:, 0]), np.maximum(U[:, 0], W[:, 0]),
+                     np.minimum(U[:, 1], W[:, 1]), np.maximum(U[:, 1], W[:, 1])], 1)
+    pp, ps = _box_pairs(pbox, sbox)
+    if len(pp):
+        u, w, x = U[ps], W[ps], X[pp]
+        scale = np.maximum(np.abs(np.concatenate([u, w, x], 1)).max(1), 2.0**-1000)
+        k = -np.frexp(scale)[1][:, None]
+        su, sw, sx = np.ldexp(u, k), np.ldexp(w, k), np.ldexp(x, k)
+        d = sw - su
+        cross = d[:, 0] * (sx[:, 1] - su[:, 1]) - d[:, 1] * (sx[:, 0] - su[:, 0])
+        near = np.abs(cross) <= ON_SEGMENT_RTOL * np.hypot(d[:, 0], d[:, 1])
+        after_u = _sign2x2(x[:, 0], u[:, 0], w[:, 0], u[:, 0], u[:, 1], x[:, 1], w[:, 1], u[:, 1]) > 0
+        before_w = _sign2x2(w[:, 0], x[:, 0], w[:, 0], u[:, 0], x[:, 1], w[:, 1], w[:, 1], u[:, 1]) > 0
+        sel = near & after_u & before_w
+        pp, ps = pp[sel], ps[sel]
+        # position along the segment, in a per-segment power-of-two scale
+        kk = -np.frexp(np.maximum(np.abs(np.concatenate([u, w], 1)).max(1), 2.0**-1000))[1]
+        kk = kk[sel][:, None]
+        su = np.ldexp(u[sel], kk)
+        t = ((np.ldexp(x[sel], kk) - su) * (np.ldexp(w[sel], kk) - su)).sum(1)
+    else:
+        t = np.zeros(0)
+    # Nodes: endpoints (t = -inf / +inf) and the inner vertices, per segment.
+    ns = len(segk)
+    uid = np.array([where.get(tuple(p), -1) for p in U.tolist()], dtype=np.int64)
+    wid = np.array([where.get(tuple(p), -1) for p in W.tolist()], dtype=np.int64)
+    node_seg = np.concatenate([np.arange(ns), ps, np.arange(ns)])
+    node_t = np.concatenate([np.full(ns, -np.inf), t, np.full(ns, np.inf)])
+    node_id = np.concatenate([uid, ids[pp], wid])
+    node_xy = np.concatenate([U, X[pp], W])
+    order = np.lexsort((node_t, node_seg))
+    node_seg, node_id, node_xy = node_seg[order], node_id[order], node_xy[order]
+    nn = len(order)
+    # Piece i joins node i and node i + 1 of the same segment.  A subsegment
+    # whose two ends are nodes of one segment covers every piece between them
+    # (by rank, so that nearly coincident nodes may come in either order).
+    S = m.S[ok]
+    if len(S):
+        ends = np.concatenate([S[:, 0], S[:, 1]])
+        which = np.concatenate([np.arange(len(S)), np.arange(len(S))])
+        valid = node_id >= 0
+        nodes = np.flatnonzero(valid)
+        nj, ej = _join(nodes, node_id[valid], np.arange(len(ends)), ends)
+        # (subsegment, segment) pairs met at both ends
+        key = which[ej].astype(np.int64) * np.int64(ns) + node_seg[nj]
+        srt = np.lexsort((nj, key))
+        key, nj = key[srt], nj[srt]
+        same = np.flatnonzero(key[1:] == key[:-1])  # exactly two entries per pair
+        lo = np.minimum(nj[same], nj[same + 1])
+        hi = np.maximum(nj[same], nj[same + 1])
+        cover = np.zeros(nn + 1, np.int64)
+        np.add.at(cover, lo, 1)
+        np.add.at(cover, hi, -1)
+        covered_piece = np.cumsum(cover)[:-1] > 0
+    else:
+        covered_piece = np.zeros(nn, bool)
+    a = np.arange(nn - 1)
+    a = a[node_seg[a] == node_seg[a + 1]]
+    b = a + 1
+    ia, ib = node_id[a], node_id[b]
+    covered = covered_piece[a]
+    chains = []
+    cuts = np.flatnonzero(node_seg[1:] != node_seg[:-1]) + 1
+    for grp in np.split(node_id, cuts):
+        if len(grp) >= 2 and grp[0] >= 0 and grp[-1] >= 0:
+            chains.append((int(grp[0]), int(grp[-1]), grp[1:-1].tolist()))
+    gaps = np.flatnonzero(~covered)
+    if not gaps.size:
+        return chains
+    tri, g = _segments_meet_triangles(m, node_xy[a[gaps]], node_xy[b[gaps]])
+    g = np.unique(g)
     msgs = []
-    for k, (i, j) in enumerate(iseg.tolist()):
-        if not (0 <= i < len(iv) and 0 <= j < len(iv)):
-            msgs.append(f"input segment {k} ({i}, {j}) has an index out of range")
-            continue
-        u = (float(iv[i, 0]), float(iv[i, 1]))
-        v = (float(iv[j, 0]), float(iv[j, 1]))
-        if u == v:
-            continue
-        start, end = where.get(u), where.get(v)
-        if start is None or end is None:
-            msgs.append(
-                f"input segment {k} ({i}, {j}): endpoint {u if start is None else v} "
-                "is not an endpoint of any output subsegment"
-            )
-            continue
-        cur, path = start, []
-        cpt = u
-        for _ in range(limit):
-            best, bestpt = None, None
-            for x in adj[cur]:
-                xp = Vl[x]
-                if xp == v:
-                    best, bestpt = x, xp
-                    break
-                if not _on_line(u, v, xp):
-                    continue
-                if _dot_sign_scalar(cpt, xp, u, v) <= 0:  # no progress
-                    continue
-                if _dot_sign_scalar(xp, v, u, v) <= 0:  # at or beyond v
-                    continue
-                if best is None or _dot_sign_scalar(xp, bestpt, u, v) > 0:
-                    best, bestpt = x, xp
-            if best is None:
-                break
-            if bestpt == v:
-                cur = best
-                break
-            path.append(best)
-            cur, cpt = best, bestpt
-        if Vl[cur] != v:
-            msgs.append(
-                f"input segment {k} ({i}, {j}) from {u} to {v} is not covered by a chain of "
-                f"collinear subsegments (stopped at output vertex {cur} at {cpt})"
-            )
-            continue
-    probs.add("input segments missing", msgs)
+    for j in g[:MAX_MESSAGES]:
+        k = int(segk[node_seg[a[gaps[j]]]])
+        i0, i1 = int(ia[gaps[j]]), int(ib[gaps[j]])
+        msgs.append(
+            f"input segment {k} {iseg[k].tolist()}: the piece from output vertex {i0} "
+            f"{node_xy[a[gaps[j]]].tolist()} to {i1} {node_xy[b[gaps[j]]].tolist()} lies in "
+            "the mesh but is not a chain of collinear subsegments"
+        )
+    probs.add("input segments missing", msgs, len(g))
+    return chains
 
 
 def _output_chains(m: _Mesh, chains: _Chains):
@@ -835,6 +927,10 @@ def _angles(P):
     for i in range(3):
         a, b, c = P[:, i], P[:, (i + 1) % 3], P[:, (i + 2) % 3]
         u, w = b - a, c - a
+        # exact power-of-two normalisation: no overflow or underflow below
+        big = np.maximum(np.abs(u).max(axis=1), np.abs(w).max(axis=1))
+        e = np.frexp(big)[1][:, None]
+        u, w = np.ldexp(u, -e), np.ldexp(w, -e)
         cross = u[:, 0] * w[:, 1] - u[:, 1] * w[:, 0]
         dot = u[:, 0] * w[:, 0] + u[:, 1] * w[:, 1]
         out[:, i] = np.degrees(np.arctan2(np.abs(cross), dot))
@@ -889,17 +985,19 @@ def _exempt(m: _Mesh, t: int, ang, chains: _Chains, wedges, mpw, subsegs) -> boo
                 return True
     # (b) Miller-Pav-Walkington: a shortest edge joins two points on two
     # segments sharing an endpoint J, at equal distances from J.
-    L = [float(np.sum((P[(k + 2) % 3] - P[(k + 1) % 3]) ** 2)) for k in range(3)]
+    L = [math.hypot(*(P[(k + 2) % 3] - P[(k + 1) % 3]).tolist()) for k in range(3)]
     lmin = min(L)
     for k in range(3):
-        if L[k] > lmin * (1.0 + 1e-12):
+        if L[k] > lmin * (1.0 + 5e-13):
             continue
         p1, p2 = tri[(k + 1) % 3], tri[(k + 2) % 3]
         if (min(p1, p2), max(p1, p2)) in subsegs:
             continue
         for c1, J1, d1 in mpw.get(p1, ()):
             for c2, J2, d2 in mpw.get(p2, ()):
-                if c1 != c2 and J1 == J2 and (1 - MPW_RATIO) * d2 < d1 < (1 + MPW_RATIO) * d2:
+                # squared distances within a factor 1 +- MPW_RATIO, as Triangle
+                if c1 != c2 and J1 == J2 and d2 > 0 and (
+                        1 - MPW_RATIO < (d1 / d2) ** 2 < 1 + MPW_RATIO):
                     return True
     return False
 
@@ -915,12 +1013,11 @@ def _mpw_table(m: _Mesh, chains: _Chains):
             if inp is not None and pp in inp:
                 continue  # input vertices are not Steiner points
             for J in (J0, J1):
-                d = (pp[0] - J[0]) ** 2 + (pp[1] - J[1]) ** 2
-                table[p].append((c, J, d))
+                table[p].append((c, J, math.hypot(pp[0] - J[0], pp[1] - J[1])))
     return table
 
 
-def _quality(m: _Mesh, pslg, min_angle, probs: _Problems | None):
+def _quality(m: _Mesh, pslg, min_angle, probs: _Problems | None, pslg_chains=None):
     """Angles of the good triangles; bad and exempt triangle indices."""
     idx = np.flatnonzero(m.good)
     ang = _angles(m.P[idx]) if idx.size else np.zeros((0, 3))
@@ -934,6 +1031,9 @@ def _quality(m: _Mesh, pslg, min_angle, probs: _Problems | None):
             if pslg is not None:
                 iv = np.asarray(pslg.get("vertices", np.zeros((0, 2))), dtype=np.float64)
                 chains.input_points = {(float(x), float(y)) for x, y in iv.reshape(-1, 2).tolist()}
+                if pslg_chains is None:
+                    pslg_chains = _pslg_chains(m, pslg, _Problems())
+                chains.chains.extend(pslg_chains)
             _output_chains(m, chains)
             wedges = _wedges(m, chains, min(SMALL_INPUT_ANGLE, min_angle))
             mpw = _mpw_table(m, chains)
@@ -942,12 +1042,12 @@ def _quality(m: _Mesh, pslg, min_angle, probs: _Problems | None):
             for pos in badpos:
                 t = int(idx[pos])
                 (exempt_t if _exempt(m, t, ang[pos], chains, wedges, mpw, subsegs) else bad_t).append(t)
-            sink.add("triangles below the angle bound", [
+            sink.add("triangles below the angle bound", (
                 f"triangle {t} {m.T[t].tolist()} has minimum angle "
                 f"{ang[np.searchsorted(idx, t)].min():.6f} < {min_angle} degrees "
                 "(no small input angle explains it)"
                 for t in bad_t
-            ])
+            ), len(bad_t))
     return idx, ang, bad_t, exempt_t
 
 
@@ -1019,7 +1119,8 @@ def check_mesh(result, pslg=None, min_angle=None, *, delaunay=True, max_area=Non
                (a missing key means an empty mesh), optional ``segments``
                (the constrained subsegments) and markers.
     pslg       the input dict; every input segment must appear as a chain of
-               collinear output subsegments (see ON_SEGMENT_RTOL).
+               collinear output subsegments (see ON_SEGMENT_RTOL), except for
+               pieces lying outside the mesh (eaten with holes/exterior).
     min_angle  degrees; triangles below it are problems unless a small input
                angle explains them (see ``quality_report``).
     delaunay   check the constrained Delaunay property (exact incircle) on
@@ -1041,10 +1142,9 @@ def check_mesh(result, pslg=None, min_angle=None, *, delaunay=True, max_area=Non
     _check_segments(m, e, probs)
     if delaunay:
         _check_delaunay(m, e, probs)
-    if pslg is not None:
-        _pslg_chains(m, pslg, probs)
+    pslg_chains = _pslg_chains(m, pslg, probs) if pslg is not None else None
     if min_angle is not None:
-        _quality(m, pslg, min_angle, probs)
+        _quality(m, pslg, min_angle, probs, pslg_chains)
     if max_area is not None:
         _check_area(m, max_area, probs)
     if markers:
@@ -1067,9 +1167,11 @@ def quality_report(result, pslg=None, min_angle=None) -> dict:
           (relative 1e-12) that is not a subsegment joins two Steiner
           points lying on two different segments that share an endpoint J,
           with squared distances to J equal within a factor 1 +- 0.001.
-      Segments are the input segments when ``pslg`` is given (their chains
-      of output subsegments; input vertices are not Steiner points),
-      otherwise the maximal straight chains of output subsegments.
+      Segments are the maximal straight chains of output subsegments (cut at
+      input vertices when ``pslg`` is given, since input vertices are not
+      Steiner points), plus, when ``pslg`` is given, the input segments with
+      the output vertices on them (so J is the input segment's endpoint even
+      when other segments cross it, as in Triangle).
     """
     m = _Mesh(result, _Problems())
     if not m.ok:

@@ -244,19 +244,23 @@ def _keep_lowest_copy(m: Mesh, dup: np.ndarray) -> None:
     dup[best[root]] = -1
 
 
-def delaunay(xy: np.ndarray, work: np.ndarray, *, seed: int = 0, extra_triangles: int = 0) -> tuple[Mesh, np.ndarray]:
+def delaunay(
+    xy: np.ndarray, work: np.ndarray, *, seed: int = 0, extra_vertices: int = 0, extra_triangles: int = 0
+) -> tuple[Mesh, np.ndarray]:
     """Delaunay triangulation of the rows of ``xy`` (finite float64 coordinates).
 
     Returns the mesh (ghosts removed; no triangles if the points are all
     collinear) and ``duplicate_of``: -1, or the index of the copy of that
     point which is in the mesh (the lowest index of the copies).
-    ``extra_triangles`` reserves room for later stages.
+    ``extra_vertices`` and ``extra_triangles`` reserve room for later stages.
     """
-    xy = np.ascontiguousarray(xy, dtype=np.float64)
     n = xy.shape[0]
+    order = insertion_order(xy, np.arange(n), seed)  # first: its temporaries die before the mesh exists
+    room = np.empty((n + extra_vertices, 2), dtype=np.float64)
+    room[:n] = xy
     dup = np.full(n, -1, dtype=np.int64)
-    m = new_mesh(xy, 2 * n + 8 + extra_triangles)
-    order = insertion_order(xy, np.arange(n), seed)
+    m = new_mesh(room, 2 * n + 8 + extra_triangles)
+    m.size[0] = n
     t, jb, jc = _first_triangle(m, work, order)
     if t < 0:  # all collinear (or fewer than 3 distinct points): no triangles, no error
         return m, dup

@@ -123,9 +123,9 @@ def triangulate(tri: dict, opts: str = "", *, strategy: str = "triangle", seed: 
 def _mark_hull_vertices(ms: Mesher) -> None:
     """Triangulating a point set marks every hull vertex whose marker is 0 with 1."""
     m = ms.m
-    tris = live_triangles(m)
-    e = (3 * tris[:, None] + np.arange(3)).ravel()
-    e = e[m.twin[e] == NO_EDGE]
+    n = int(m.size[1])
+    alive = np.repeat(m.stamp[:n] > 0, 3)
+    e = np.flatnonzero(alive & (m.twin[: 3 * n] == NO_EDGE))
     ends = edge_ends(m, e).ravel()
     ms.vmark[ends[ms.vmark[ends] == 0]] = 1
 
@@ -146,8 +146,8 @@ def _assemble(ms: Mesher, inp: dict, o: Options) -> Result:
     m = ms.m
     nv = int(m.size[S_NVERT])
     tris = live_triangles(m)
-    tri_index = np.full(m.stamp.shape[0], -1, dtype=np.int64)
-    tri_index[tris] = np.arange(tris.size)
+    tri_index = np.full(m.stamp.shape[0], -1, dtype=np.int32)
+    tri_index[tris] = np.arange(tris.size, dtype=np.int32)
     corners = m.corner.reshape(-1, 3)[tris]
 
     if o.j:
@@ -161,7 +161,7 @@ def _assemble(ms: Mesher, inp: dict, o: Options) -> Result:
         new_id = np.arange(nv)
 
     def ids(a):
-        return (new_id[a] if o.j else a).astype(np.int32)
+        return (new_id[a] if o.j else a).astype(np.int32, copy=False)
 
     out = Result()
     if not o.N:

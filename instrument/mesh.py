@@ -76,10 +76,14 @@ def new_mesh(xy: np.ndarray, max_triangles: int) -> Mesh:
     )
 
 
-def grow_triangles(m: Mesh, min_capacity: int) -> Mesh:
-    """Return a copy of ``m`` with room for at least ``min_capacity`` triangles."""
+def grow_triangles(m: Mesh, min_capacity: int, *, exact: bool = False) -> Mesh:
+    """Return a copy of ``m`` with room for at least ``min_capacity`` triangles
+    (at least double the old room, so repeated growth is amortised, unless
+    ``exact``)."""
     old = m.stamp.shape[0]
-    cap = max(2 * old, int(min_capacity))
+    cap = int(min_capacity) if exact else max(2 * old, int(min_capacity))
+    if cap <= old:
+        return m
 
     def widen(a, fill, per):
         out = np.full(per * cap, fill, dtype=a.dtype)
@@ -95,9 +99,11 @@ def grow_triangles(m: Mesh, min_capacity: int) -> Mesh:
     )
 
 
-def grow_vertices(m: Mesh, min_capacity: int) -> Mesh:
+def grow_vertices(m: Mesh, min_capacity: int, *, exact: bool = False) -> Mesh:
     """Return a copy of ``m`` with room for at least ``min_capacity`` vertices."""
-    cap = max(2 * m.xy.shape[0], int(min_capacity))
+    cap = int(min_capacity) if exact else max(2 * m.xy.shape[0], int(min_capacity))
+    if cap <= m.xy.shape[0]:
+        return m
     xy = np.zeros((cap, 2), dtype=np.float64)
     xy[: m.xy.shape[0]] = m.xy
     return m._replace(xy=xy)

@@ -38,9 +38,10 @@ def _put(out: dict, key: str, arr: np.ndarray) -> None:
 
 
 def unique_edges(m: Mesh, tris: np.ndarray, tri_index: np.ndarray) -> np.ndarray:
-    """Each edge once, as Triangle lists them: triangle by triangle, edges
-    0, 1, 2, taking an edge when its neighbour is absent or comes later."""
-    e = (3 * tris[:, None] + np.arange(3)).ravel()
+    """Each edge once, as Triangle lists them: triangle by triangle, the edges
+    (c0, c1), (c1, c2), (c2, c0) -- our edges 2, 0, 1 -- taking an edge when
+    its neighbour is absent or comes later."""
+    e = (3 * tris[:, None] + np.array([2, 0, 1])).ravel()
     tw = m.twin[e]
     keep = (tw == NO_EDGE) | (tri_index[np.maximum(tw, 0) // 3] > tri_index[e // 3])
     return e[keep]

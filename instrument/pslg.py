@@ -72,10 +72,9 @@ def _widen(a: np.ndarray, n: int, fill) -> np.ndarray:
 def start(xy: np.ndarray, markers: np.ndarray, work: np.ndarray, seed: int, spare_vertices: int) -> Mesher:
     """Delaunay-triangulate the input vertices, with room for more."""
     n = xy.shape[0]
-    m, dup = delaunay(xy, work, seed=seed)
-    cap = n + max(spare_vertices, 16)
-    m = grow_vertices(m, cap)
-    m = grow_triangles(m, 2 * cap + 8)
+    spare = max(spare_vertices, 16)
+    m, dup = delaunay(xy, work, seed=seed, extra_vertices=spare, extra_triangles=2 * spare)
+    cap = n + spare
     vmark = np.zeros(cap, dtype=np.int32)
     vmark[:n] = markers
     mesher = Mesher(
@@ -97,21 +96,22 @@ def clean_segments(segments: np.ndarray, xy: np.ndarray, dup: np.ndarray, warnin
     invalid endpoints and coincident endpoints; endpoints that are duplicate
     vertices are mapped to the copy in the mesh."""
     n = xy.shape[0]
-    rows = []
-    for i, (a, b) in enumerate(np.asarray(segments, dtype=np.int64).reshape(-1, 2)):
-        if not 0 <= a < n:
+    seg = np.asarray(segments, dtype=np.int64).reshape(-1, 2)
+    bad_first = (seg[:, 0] < 0) | (seg[:, 0] >= n)
+    bad_second = ~bad_first & ((seg[:, 1] < 0) | (seg[:, 1] >= n))
+    ok = ~(bad_first | bad_second)
+    ends = np.where(ok[:, None], seg, 0)
+    ends = np.where(dup[ends] >= 0, dup[ends], ends)
+    coincident = ok & (xy[ends[:, 0]] == xy[ends[:, 1]]).all(axis=1)
+    for i in np.flatnonzero(~ok | coincident):
+        if bad_first[i]:
             warnings.append(f"Warning:  Invalid first endpoint of segment {i} in input.")
-            continue
-        if not 0 <= b < n:
+        elif bad_second[i]:
             warnings.append(f"Warning:  Invalid second endpoint of segment {i} in input.")
-            continue
-        a = a if dup[a] < 0 else dup[a]
-        b = b if dup[b] < 0 else dup[b]
-        if a == b or (xy[a] == xy[b]).all():
+        else:
             warnings.append(f"Warning:  Endpoints of segment {i} are coincident in input.")
-            continue
-        rows.append((a, b, i))
-    return np.array(rows, dtype=np.int64).reshape(-1, 3)
+    keep = ok & ~coincident
+    return np.c_[ends[keep], np.flatnonzero(keep)].astype(np.int64)
 
 
 def recover_segments(ms: Mesher, rows: np.ndarray, seg_markers: np.ndarray) -> None:
@@ -131,7 +131,12 @@ def recover_segments(ms: Mesher, rows: np.ndarray, seg_markers: np.ndarray) -> N
         if status == cdt.DONE:
             return
         if status == cdt.FAILED:
-            raise RuntimeError("internal error: segment recovery failed (please report this input)")
+            a, b, i = pieces[int(ms.segs.size[cdt.R_SP]) - 1]
+            raise RuntimeError(
+                f"could not recover segment {i} between ({ms.m.xy[a, 0]:.17g}, {ms.m.xy[a, 1]:.17g}) and "
+                f"({ms.m.xy[b, 0]:.17g}, {ms.m.xy[b, 1]:.17g}): its crossings with nearly parallel "
+                "segments fall on their endpoints in floating point"
+            )
         ms.grow(vertices=ms.n_vertices // 2 + 16, triangles=ms.m.stamp.shape[0] // 2 + 64, records=ms.segs.marker.shape[0])
         if int(ms.segs.size[cdt.R_SP]) + 2 > pieces.shape[0]:
             pieces = _widen(pieces, 2 * pieces.shape[0], 0)

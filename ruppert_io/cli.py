@@ -226,6 +226,12 @@ def main(argv: Sequence[str] | None = None) -> int:
     except KeyboardInterrupt:
         print("Error: interrupted", file=sys.stderr)
         return 130
+    except BrokenPipeError:  # e.g. `ruppert -V x | head`: stop quietly
+        try:
+            os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        except (OSError, ValueError, AttributeError):
+            pass
+        return 1
     except MemoryError:
         _error("Out of memory.")
         return 1
@@ -326,7 +332,7 @@ def _run(argv: list[str], out: TextIO) -> int:
         raise CliError("Input must have at least three input vertices.")
     if o.j and o.N:
         warn("Warning:  -j and -N switches are somewhat incompatible.")
-        warn("  If any vertices are jettisoned, you will need the output .node file to use the mesh.")
+        warn("  If any vertices are jettisoned, the mesh needs the output .node file.")
 
     result, engine_ms = _triangulate(data, o, cmd.long, engine_kwargs, quiet)
     ntriangles = len(stats._triangles(result))
@@ -358,18 +364,7 @@ def _run(argv: list[str], out: TextIO) -> int:
         raise CliError(f"Cannot create file {exc.filename}.") from None
     for line in lines:
         say(line)
-    for fmt, ext, note in formats:
-        if note:
-            warn(note)
-        path = f"{outbase}{ext}"
-        _write_meshio(path, mesh, fmt, o)
-        say(f"Writing {path}.")
-    if cmd.long.work_json:
-        _write_file(cmd.long.work_json, json.dumps(result.work, indent=2) + "\n")
-        say(f"Writing {cmd.long.work_json}.")
-    if cmd.long.trace:
-        _write_trace(cmd.long.trace, getattr(result, "trace", None))
-        say(f"Writing {cmd.long.trace}.")
+    _write_extras(cmd.long, formats, outbase, mesh, result, o, say, warn)
     if o.V:
         now = time.perf_counter()
         say()
@@ -382,6 +377,23 @@ def _run(argv: list[str], out: TextIO) -> int:
     if o.C:
         _check(mesh, out, quiet)
     return 0
+
+
+def _write_extras(long, formats, outbase: str, mesh, result, o, say, warn) -> None:
+    """The long options' files: meshio formats, --work-json, --trace."""
+    for fmt, ext, note in formats:
+        if note:
+            warn(note)
+        path = f"{outbase}{ext}"
+        _write_meshio(path, mesh, fmt, o)
+        say(f"Writing {path}.")
+    if long.work_json:
+        work = dict(getattr(result, "work", {}) or {})
+        _write_file(long.work_json, json.dumps(work, indent=2) + "\n")
+        say(f"Writing {long.work_json}.")
+    if long.trace:
+        _write_trace(long.trace, getattr(result, "trace", None))
+        say(f"Writing {long.trace}.")
 
 
 def _engine_kwargs(long: argparse.Namespace) -> dict[str, Any]:
@@ -555,7 +567,8 @@ def _choose_outputs(o, outbase: str, node_read: bool) -> tuple[list[str], list[s
             lines.append("NOT writing a .poly file.")
         else:
             take("poly")
-    for switch, kind in (("g", "off"), ("e", "edge"), ("v", "v.node"), ("v", "v.edge"), ("n", "neigh")):
+    extras = (("g", "off"), ("e", "edge"), ("v", "v.node"), ("v", "v.edge"), ("n", "neigh"))
+    for switch, kind in extras:
         if getattr(o, switch):
             take(kind)
     return kinds, lines
@@ -577,7 +590,7 @@ def _statistics(o, data, info: Info, mesh, result) -> str:
     if o.V:
         work = dict(getattr(result, "work", {}) or {})
         text += stats.format_quality(stats.quality_statistics(mesh))
-        text += stats.format_algorithmic(work, counts.triangles)
+        text += stats.format_algorithmic(work, counts.triangles, voronoi=o.v)
         text += stats.format_work(work)
     return text
 

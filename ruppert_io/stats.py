@@ -233,7 +233,10 @@ def quality_statistics(mesh: Mapping[str, Any]) -> QualityStats:
     acute_cos2 = cos2[acute]
     obtuse_cos2 = cos2[~acute]
     smallest_cos2 = largest(acute_cos2, 0.0)
-    smallest_angle = 0.0 if smallest_cos2 >= 1.0 else math.degrees(math.acos(math.sqrt(smallest_cos2)))
+    if smallest_cos2 >= 1.0:
+        smallest_angle = 0.0
+    else:
+        smallest_angle = math.degrees(math.acos(math.sqrt(smallest_cos2)))
     if obtuse_cos2.size:
         # Triangle's first obtuse corner sets the value unconditionally.
         first = float(obtuse_cos2[0])
@@ -269,7 +272,8 @@ def format_quality(q: QualityStats) -> str:
         % (q.shortest_altitude, q.largest_aspect_ratio),
         "",
         "  Triangle aspect ratio histogram:",
-        "  1.1547 - %-6.6g    :  %8d    | %6.6g - %-6.6g     :  %8d" % (r[0], a[0], r[7], r[8], a[8]),
+        "  1.1547 - %-6.6g    :  %8d    | %6.6g - %-6.6g     :  %8d"
+        % (r[0], a[0], r[7], r[8], a[8]),
     ]
     for i in range(1, 7):
         lines.append(
@@ -277,7 +281,8 @@ def format_quality(q: QualityStats) -> str:
             % (r[i - 1], r[i], a[i], r[i + 7], r[i + 8], a[i + 8])
         )
     lines += [
-        "  %6.6g - %-6.6g    :  %8d    | %6.6g -            :  %8d" % (r[6], r[7], a[7], r[14], a[15]),
+        "  %6.6g - %-6.6g    :  %8d    | %6.6g -            :  %8d"
+        % (r[6], r[7], a[7], r[14], a[15]),
         "  (Aspect ratio is longest edge divided by shortest altitude)",
         "",
         "  Smallest angle: %15.5g   |  Largest angle: %15.5g" % (q.smallest_angle, q.largest_angle),
@@ -299,19 +304,21 @@ def format_quality(q: QualityStats) -> str:
 # --------------------------------------------------------------------------
 
 
-def format_algorithmic(work: Mapping[str, int], ntriangles: int) -> str:
+def format_algorithmic(work: Mapping[str, int], ntriangles: int, *, voronoi: bool = False) -> str:
     """Triangle's "Algorithmic statistics:" section from our counters.
 
     Triangle's printed orientation count includes one test per output triangle,
     made by the quality statistics before printing; ``quality_statistics`` makes
-    the same computation, so ``ntriangles`` is added to the engine's count.
+    the same computation, so ``ntriangles`` is added to the engine's count.  With
+    ``voronoi`` (-v), Triangle computes one more circumcenter per triangle for the
+    Voronoi diagram, as the command line does; those are added too.
     """
     lines = ["Algorithmic statistics:", ""]
     lines.append(f"  Number of incircle tests: {int(work.get('incircle_tests', 0))}")
     lines.append(
         f"  Number of 2D orientation tests: {int(work.get('orient_tests', 0)) + ntriangles}"
     )
-    circumcenters = int(work.get("circumcenters", 0))
+    circumcenters = int(work.get("circumcenters", 0)) + (ntriangles if voronoi else 0)
     if circumcenters > 0:
         lines.append(f"  Number of triangle circumcenter computations: {circumcenters}")
     lines.append("")

@@ -32,10 +32,38 @@ def uniform(n: int, seed: int = 1) -> dict:
     return {"vertices": np.random.default_rng(seed).random((n, 2))}
 
 
+def polygon_with_holes(n: int, holes: int = 16, seed: int = 2) -> dict:
+    """A wavy outer polygon of n/2 vertices and ``holes`` wavy round holes
+    sharing the other n/2, as segments; one hole point per hole."""
+    rng = np.random.default_rng(seed)
+    loops, centers = [], []
+    outer = n // 2
+    ang = np.linspace(0, 2 * np.pi, outer, endpoint=False)
+    r = 1 + 0.05 * np.sin(7 * ang) + 0.2 / outer * rng.random(outer)  # noise below the spacing: simple
+    loops.append(np.c_[r * np.cos(ang), r * np.sin(ang)])
+    side = int(np.ceil(np.sqrt(holes)))
+    per = (n - outer) // holes
+    for h in range(holes):
+        c = (np.array([h % side, h // side]) + 0.5) / side * 1.2 - 0.6
+        a = np.linspace(0, 2 * np.pi, per, endpoint=False)
+        rr = 0.25 / side * (1 + 0.1 * np.sin(5 * a))
+        loops.append(c + np.c_[rr * np.cos(a), rr * np.sin(a)])
+        centers.append(c)
+    verts, segs, start = [], [], 0
+    for loop in loops:
+        k = len(loop)
+        verts.append(loop)
+        idx = np.arange(k) + start
+        segs.append(np.c_[idx, np.roll(idx, -1)])
+        start += k
+    return {"vertices": np.vstack(verts), "segments": np.vstack(segs), "holes": np.array(centers)}
+
+
 # name -> (input builder, switches)
 WORKLOADS = {
     "dt-1e5": (lambda: uniform(10**5), ""),
     "dt-1e6": (lambda: uniform(10**6), ""),
+    "cdt-1e5": (lambda: polygon_with_holes(10**5), "p"),
 }
 
 
@@ -50,26 +78,36 @@ def run_engine(engine: str, data: dict, opts: str):
 
 
 def peak_memory_mb(workload: str, engine: str) -> float:
-    """Growth of max RSS (MB) while one engine runs the workload once, in a fresh process."""
+    """Peak growth of resident memory (MB) while one engine runs the workload
+    once, in a fresh process, sampled every millisecond from /proc."""
     code = (
-        "import sys, resource, json; sys.path.insert(0, %r)\n"
-        "from bench import WORKLOADS, run_engine\n"
+        "import sys, json, threading, time; sys.path.insert(0, %r)\n"
+        "from bench import WORKLOADS, polygon_with_holes, run_engine, rss_mb\n"
         "make, opts = WORKLOADS[%r]; data = make()\n"
-        "run_engine(%r, {'vertices': data['vertices'][:100]}, opts)  # load numba's cache\n"
-        "before = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss\n"
-        "run_engine(%r, data, opts)\n"
-        "after = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss\n"
-        "print(json.dumps((after - before) / 1024))\n"
+        "run_engine(%r, polygon_with_holes(200), opts)  # load numba's cache\n"
+        "base = rss_mb(); peak = [base]; done = []\n"
+        "def watch():\n"
+        "    while not done:\n"
+        "        peak[0] = max(peak[0], rss_mb()); time.sleep(0.001)\n"
+        "th = threading.Thread(target=watch); th.start()\n"
+        "out = run_engine(%r, data, opts)\n"
+        "peak[0] = max(peak[0], rss_mb()); done.append(1); th.join()\n"
+        "print(json.dumps(peak[0] - base))\n"
     ) % (str(ROOT / "scripts"), workload, engine, engine)
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     return float(out.stdout.strip().splitlines()[-1])
 
 
+def rss_mb() -> float:
+    """Current resident set size of this process in MB."""
+    with open("/proc/self/statm") as f:
+        return int(f.read().split()[1]) * resource.getpagesize() / 2**20
+
+
 def bench(name: str, repeat: int, memory: bool) -> dict:
     make, opts = WORKLOADS[name]
     data = make()
-    small = {"vertices": data["vertices"][:100]}
-    run_engine("ours", small, opts)  # compile / load numba's cache
+    run_engine("ours", polygon_with_holes(200), opts)  # compile / load numba's cache
     best = {"ours": float("inf"), "triangle": float("inf")}
     sizes = {}
     for _ in range(repeat):

@@ -126,3 +126,10 @@ def test_work_section_lists_every_counter_first_two_fixed():
     lines = stats.format_work(work).splitlines()
     assert lines[:4] == ["Work statistics:", "", "  Triangles created: 7", "  Incircle tests: 5"]
     assert "  Orientation tests: 3" in lines and "  New counter: 1" in lines
+
+
+def test_voronoi_adds_one_circumcenter_per_triangle():
+    """Reference §3.7: -v raises A's circumcenter count from 38 to 125 (87 triangles)."""
+    work = {"incircle_tests": 428, "orient_tests": 492, "circumcenters": 38}
+    text = stats.format_algorithmic(work, 87, voronoi=True)
+    assert "  Number of triangle circumcenter computations: 125\n" in text

@@ -505,18 +505,39 @@ def test_input_segment_missing_from_subsegments(A30):
     r["segments"] = np.delete(r["segments"], 4, axis=0)
     r["segment_markers"] = np.delete(r["segment_markers"], 4, axis=0)
     p = check_mesh(r, d, 30)
-    assert has(p, "is not covered by a chain of collinear subsegments")
+    assert has(p, "is not a chain of collinear subsegments")
     assert check_mesh(r, None, 30) == []  # without the PSLG nothing is missing
 
 
-def test_steiner_vertex_off_its_segment(A30):
-    d, r0 = A30
-    r = copy(r0)
+def test_steiner_vertex_off_its_segment():
+    d = pslg("la")
+    r0 = triangle.triangulate(d, "pq30")
     n_in = len(d["vertices"])
-    w = int(next(v for v in np.unique(r["segments"]) if v >= n_in))
-    r["vertices"][w] += 1e-6
+    em = edge_map(r0["triangles"])
+    # a Steiner vertex on an interior segment (triangles on both sides)
+    a, b = next((a, b) for a, b in r0["segments"].tolist()
+                if a >= n_in and (a, b) in em and (b, a) in em)
+    r = copy(r0)
+    r["vertices"][a] += 1e-5
     p = check_mesh(r, d, None, delaunay=False)
-    assert has(p, "is not covered by a chain of collinear subsegments")
+    assert has(p, "is not a chain of collinear subsegments")
+
+
+def test_eaten_segments_may_be_missing():
+    # A square with a dangling segment outside it and one inside it: Triangle
+    # deletes the outer one with the exterior, keeps the inner one.
+    d = {"vertices": np.array([(0, 0), (1, 0), (1, 1), (0, 1), (2, 2), (3, 2.5),
+                               (0.2, 0.2), (0.6, 0.3)], float),
+         "segments": np.array([(0, 1), (1, 2), (2, 3), (3, 0), (2, 4), (4, 5), (6, 7)])}
+    r = triangle.triangulate(d, "pq30")
+    assert check_mesh(r, d, 30) == []
+    s = {tuple(sorted(x)) for x in r["segments"].tolist()}
+    assert (2, 4) not in s and (4, 5) not in s
+    inner = next(i for i, x in enumerate(r["segments"].tolist()) if 6 in x or 7 in x)
+    r2 = copy(r)
+    r2["segments"] = np.delete(r2["segments"], inner, axis=0)
+    r2["segment_markers"] = np.delete(r2["segment_markers"], inner, axis=0)
+    assert has(check_mesh(r2, d, 30, delaunay=False), "input segment 6 ")
 
 
 def test_markers(A30):
