@@ -328,11 +328,16 @@ def _recover(m, work, segs, vmark, vtri, a, b, marker, source, buf, state):
 
 
 @kernel
-def _split_at_crossing(m, work, segs, vmark, vtri, a, b, c, stack, parent):
-    """Insert the crossing point of segment ``a b`` with subsegment edge ``c``
-    as a new vertex splitting that subsegment.  Returns the vertex, or -1 if
-    the tables are full.  A crossing point that rounds onto an endpoint of
-    the crossed edge (three segments through one point) is that endpoint."""
+def _split_at_crossing(m, work, segs, vmark, vtri, a, b, c, stack, parent, state):
+    """Split subsegment edge ``c`` where segment ``a b`` crosses it.
+
+    Returns ``(v, snapped)``: ``v`` is the new vertex, or ``-1`` if the tables
+    are full.  If the crossing point rounds onto an existing vertex (three
+    segments through one point, or nearly parallel segments), no vertex is
+    made: ``v`` is that vertex and ``snapped`` is True when it is not an
+    endpoint of ``c`` (the caller then re-routes the crossed subsegment
+    through ``v``).
+    """
     xy = m.xy
     nv = m.size[S_NVERT]
     r = m.seg[c]
@@ -349,22 +354,15 @@ def _split_at_crossing(m, work, segs, vmark, vtri, a, b, c, stack, parent):
     px = xy[right, 0] + t * tx
     py = xy[right, 1] + t * ty
     if px == xy[right, 0] and py == xy[right, 1]:
-        return right
+        return right, False
     if px == xy[left, 0] and py == xy[left, 1]:
-        return left
-    # A crossing that rounds onto the piece's own end would repeat the piece
-    # for ever: step along the crossed subsegment, towards its middle, to the
-    # nearest distinct point (the piece then gets a tiny first or last part).
-    step = 2.0**-52 * (1.0 if t < 0.5 else -1.0)
-    k = 1
-    while ((px == xy[a, 0] and py == xy[a, 1]) or (px == xy[b, 0] and py == xy[b, 1])) and k < 2**40:
-        tk = t + k * step
-        px = xy[right, 0] + tk * tx
-        py = xy[right, 1] + tk * ty
-        k *= 2
+        return left, False
+    status, e = walk(m, work, c // 3, px, py, state, 4 * m.stamp.shape[0] + 64)
+    if status == LOC_ON_VERTEX:
+        return m.corner[lnext(e)], True
     half = new_record(segs, segs.marker[r], segs.source[r])
     if half < 0:
-        return -1
+        return -1, False
     xy[nv, 0] = px
     xy[nv, 1] = py
     parent[nv, 0] = right
@@ -390,7 +388,7 @@ def _split_at_crossing(m, work, segs, vmark, vtri, a, b, c, stack, parent):
         t0 = tw // 3
     last = lawson(m, work, stack, n)
     _remember(m, vtri, last)
-    return nv
+    return nv, False
 
 
 @kernel
@@ -406,7 +404,7 @@ def insert_segments(m, work, segs, pieces, in_marker, vmark, vtri, buf, parent, 
             m.size[S_NVERT] >= m.xy.shape[0]
             or m.stamp.shape[0] - m.size[S_NSLOT] + m.size[2] < 8
             or segs.size[R_NREC] + 2 > segs.marker.shape[0]
-            or segs.size[R_SP] + 2 > pieces.shape[0]
+            or segs.size[R_SP] + 4 > pieces.shape[0]
         ):
             return NEED_ROOM
         sp = segs.size[R_SP] - 1
@@ -419,16 +417,36 @@ def insert_segments(m, work, segs, pieces, in_marker, vmark, vtri, buf, parent, 
         elif kind == 1:
             pieces[sp, 0] = v
         elif kind == 2:
-            p = _split_at_crossing(m, work, segs, vmark, vtri, a, b, c, buf[7 * (buf.shape[0] // 10):], parent)
+            cross = buf[7 * (buf.shape[0] // 10):]
+            r = m.seg[c]
+            cr = m.corner[lnext(c)]
+            cl = m.corner[lprev(c)]
+            p, snapped = _split_at_crossing(m, work, segs, vmark, vtri, a, b, c, cross, parent, state)
             if p < 0:
                 return NEED_ROOM
-            if p == a or p == b:  # the crossing rounded onto the piece's own end: no progress
+            if snapped:
+                # re-route the crossed subsegment through p: free the edge
+                # and queue its two halves as pieces of its own segment
+                m.seg[c] = NO_SEG
+                if m.twin[c] != NO_EDGE:
+                    m.seg[m.twin[c]] = NO_SEG
+                src_c = segs.source[r]
+                pieces[sp + 1, 0] = cr
+                pieces[sp + 1, 1] = p
+                pieces[sp + 1, 2] = src_c
+                pieces[sp + 2, 0] = p
+                pieces[sp + 2, 1] = cl
+                pieces[sp + 2, 2] = src_c
+                sp += 2
+            elif p == a or p == b:  # cannot happen: c never ends at a or b
                 return FAILED
-            pieces[sp, 0] = p  # p -> b later, a -> p first
-            pieces[sp + 1, 0] = a
-            pieces[sp + 1, 1] = p
-            pieces[sp + 1, 2] = src
-            segs.size[R_SP] = sp + 2
+            if p != a and p != b:
+                pieces[sp + 1, 0] = pieces[segs.size[R_SP] - 1, 0]  # a
+                pieces[segs.size[R_SP] - 1, 0] = p  # p -> b later
+                pieces[sp + 1, 1] = p  # a -> p first
+                pieces[sp + 1, 2] = src
+                sp += 1
+            segs.size[R_SP] = sp + 1
         else:
             return FAILED
     return DONE
@@ -460,3 +478,19 @@ def build_vertex_edges(m, vtri):
                 v = m.corner[3 * t + k]
                 if v >= 0:
                     vtri[v] = 3 * t + (k + 2) % 3
+
+
+@kernel
+def count_inverted(m):
+    """Live finite triangles that are not strictly counter-clockwise (exact)."""
+    xy = m.xy
+    bad = 0
+    for t in range(m.size[S_NSLOT]):
+        if m.stamp[t] <= 0:
+            continue
+        a, b, c = m.corner[3 * t], m.corner[3 * t + 1], m.corner[3 * t + 2]
+        if a < 0 or b < 0 or c < 0:
+            continue
+        if orient2d(xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[c, 0], xy[c, 1]) <= 0.0:
+            bad += 1
+    return bad

@@ -26,9 +26,10 @@ LOC_FAILED = 4
 
 @kernel_inline
 def next_random(state):
-    """Advance the walk's LCG (kept in ``state[0]``) and return 0, 1 or 2."""
-    state[0] = (state[0] * 6364136223846793005 + 1442695040888963407) & 0x7FFFFFFFFFFFFFFF
-    return (state[0] >> 33) % 3
+    """Advance the walk's LCG (kept in ``state[0]``) and return 0, 1 or 2.
+    Products stay below 2^62, so plain Python (no JIT) does not overflow."""
+    state[0] = (state[0] * 1103515245 + 12345) & 0x7FFFFFFF
+    return (state[0] >> 16) % 3
 
 
 @kernel

@@ -11,6 +11,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from . import cdt
+from .counters import C_STEINER
 from .carve import infect_hull, locate_points, plague, spread_regions
 from .delaunay import delaunay
 from .mesh import S_NVERT, Mesh, grow_triangles, grow_vertices
@@ -129,6 +130,14 @@ def recover_segments(ms: Mesher, rows: np.ndarray, seg_markers: np.ndarray) -> N
             ms.m, ms.work, ms.segs, pieces, in_marker, ms.vmark, ms.vtri, buf, ms.parent, ms.state
         )
         if status == cdt.DONE:
+            if ms.work[C_STEINER] and cdt.count_inverted(ms.m):
+                # rounded intersection points of nearly concurrent segments
+                # can fold the mesh; never hand back a folded mesh
+                raise RuntimeError(
+                    "segments cross at points too close together for double precision "
+                    "(nearly concurrent or overlapping segments); the constrained "
+                    "triangulation could not be built"
+                )
             return
         if status == cdt.FAILED:
             a, b, i = pieces[int(ms.segs.size[cdt.R_SP]) - 1]
