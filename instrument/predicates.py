@@ -1051,10 +1051,14 @@ def _incircle_expansion_d(
     minors = wb[0:12].reshape((3, 4))
     for i in range(3):
         _lift4(dxs[i], dys[i], lifts[i])
-    fin[:finlen] = wb[220:220 + finlen]
+    # explicit loops: slice copies need numba's runtime, which kernels lack
+    for i in range(finlen):
+        fin[i] = wb[220 + i]
     flen = finlen
-    xt[:, :] = 0.0  # minor * tail, kept for the higher-order terms
-    xtlen[:] = 0
+    for i in range(6):  # minor * tail, kept for the higher-order terms
+        xtlen[i] = 0
+        for j in range(8):
+            xt[i, j] = 0.0
     for q in range(6):
         i, is_y = q // 2, q % 2
         j, k = (i + 1) % 3, (i + 2) % 3
