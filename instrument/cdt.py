@@ -32,7 +32,7 @@ from typing import NamedTuple
 import numpy as np
 
 from .counters import C_CREATED, C_DELETED, C_INCIRCLE, C_ORIENT, C_STEINER
-from .insert import lawson, split_edge
+from .insert import lawson, split_edge, star_edges
 from .jit import kernel
 from .locate import LOC_ON_VERTEX, walk
 from .mesh import NO_EDGE, NO_SEG, S_NSLOT, S_NVERT, bond, kill_triangle, lnext, lprev, new_triangle
@@ -376,16 +376,7 @@ def _split_at_crossing(m, work, segs, vmark, vtri, a, b, c, stack, parent, state
     m.seg[on_line] = half
     if m.twin[on_line] != NO_EDGE:
         m.seg[m.twin[on_line]] = half
-    first = on_line // 3
-    n = 0
-    t0 = first
-    while True:
-        stack[n] = 3 * t0
-        n += 1
-        tw = m.twin[3 * t0 + 1]
-        if tw == NO_EDGE or tw // 3 == first:
-            break
-        t0 = tw // 3
+    n = star_edges(m, on_line // 3, stack)
     last = lawson(m, work, stack, n)
     _remember(m, vtri, last)
     return nv, False

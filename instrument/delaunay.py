@@ -19,7 +19,7 @@ import numpy as np
 
 from .jit import allocating, kernel
 from .counters import C_CREATED, C_DUPLICATE, C_ORIENT
-from .insert import lawson, split_edge, split_triangle
+from .insert import lawson, split_edge, split_triangle, star_edges
 from .locate import LOC_FAILED, LOC_INSIDE, LOC_ON_EDGE, LOC_ON_VERTEX, LOC_OUTSIDE, finite_start, walk
 from .mesh import GHOST, NO_EDGE, S_NSLOT, Mesh, bond, kill_triangle, lnext, new_mesh, new_triangle
 from .predicates import orient2d
@@ -112,24 +112,6 @@ def _first_triangle(m, work, order):
             bond(m, 3 * g_bc + 0, 3 * g_ab + 1)
             return t, jb, j
     return -1, -1, -1
-
-
-@kernel
-def star_edges(m, t, stack):
-    """Push edge 0 of ``t`` and of every triangle after it counter-clockwise
-    around its corner 0 (the new vertex); return how many were pushed."""
-    n = 0
-    s = t
-    while True:
-        stack[n] = 3 * t
-        n += 1
-        tw = m.twin[3 * t + 1]
-        if tw == NO_EDGE:
-            break
-        t = tw // 3
-        if t == s:
-            break
-    return n
 
 
 @kernel

@@ -201,6 +201,24 @@ def should_flip(m, work, e):
 
 
 @kernel
+def star_edges(m, t, stack):
+    """Push edge 0 of ``t`` and of every triangle after it counter-clockwise
+    around its corner 0 (the new vertex); return how many were pushed."""
+    n = 0
+    s = t
+    while True:
+        stack[n] = 3 * t
+        n += 1
+        tw = m.twin[3 * t + 1]
+        if tw == NO_EDGE:
+            break
+        t = tw // 3
+        if t == s:
+            break
+    return n
+
+
+@kernel
 def lawson(m, work, stack, n):
     """Restore the Delaunay property around a new vertex.
 

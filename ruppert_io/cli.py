@@ -167,19 +167,6 @@ CHECK_TEXT = {
 #: Header of a --trace file when the engine returned no trace.
 TRACE_HEADER = ("step", "kind", "x", "y", "triangles_created")
 
-#: Keys of the input dict the engine accepts.
-ENGINE_KEYS = (
-    "vertices",
-    "vertex_markers",
-    "vertex_attributes",
-    "segments",
-    "segment_markers",
-    "holes",
-    "regions",
-    "triangles",
-    "triangle_attributes",
-    "triangle_max_area",
-)
 
 #: meshio formats whose extension meshio's table does not give.
 FORMAT_EXTENSIONS = {"gmsh22": ".msh", "gmsh": ".msh", "vtk42": ".vtk", "vtk51": ".vtk"}
@@ -460,9 +447,10 @@ def engine_switches(o) -> str:
 
 def _triangulate(data, o, long, kwargs, quiet):
     import instrument
+    from instrument.driver import INPUT_KEYS
 
     tri = {}
-    for key in ENGINE_KEYS:
+    for key in sorted(INPUT_KEYS):
         value = data.get(key)
         if value is not None and np.size(value):
             tri[key] = value

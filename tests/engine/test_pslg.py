@@ -92,6 +92,8 @@ def test_regional_attributes_follow_regions():
 
 
 def corpus_rows():
+    if not (CORPUS / "REFERENCE.tsv").is_file():  # a checkout without shared/ beside it
+        return []
     rows = list(csv.DictReader(open(CORPUS / "REFERENCE.tsv"), delimiter="\t"))
     return [r for r in rows if r["parser"] == "cli" and r["switches"] == "p" and r["status"] == "ok"]
 
