@@ -35,7 +35,7 @@ from .counters import C_CREATED, C_DELETED, C_INCIRCLE, C_ORIENT, C_STEINER
 from .insert import lawson, split_edge, star_edges
 from .jit import kernel
 from .locate import LOC_ON_VERTEX, walk
-from .mesh import NO_EDGE, NO_SEG, S_NSLOT, S_NVERT, bond, kill_triangle, lnext, lprev, new_triangle
+from .mesh import NO_EDGE, NO_SEG, S_NSLOT, S_NVERT, bond, kill_triangle, lnext, lprev, new_triangle, spare_triangles
 from .predicates import incircle, orient2d
 
 # status codes of insert_segments
@@ -393,7 +393,7 @@ def insert_segments(m, work, segs, pieces, in_marker, vmark, vtri, buf, parent, 
     while segs.size[R_SP] > 0:
         if (
             m.size[S_NVERT] >= m.xy.shape[0]
-            or m.stamp.shape[0] - m.size[S_NSLOT] + m.size[2] < 8
+            or spare_triangles(m) < 8
             or segs.size[R_NREC] + 2 > segs.marker.shape[0]
             or segs.size[R_SP] + 4 > pieces.shape[0]
         ):

@@ -20,7 +20,7 @@ import numpy as np
 from .jit import allocating, kernel
 from .counters import C_CREATED, C_DUPLICATE, C_ORIENT
 from .insert import lawson, split_edge, split_triangle, star_edges
-from .locate import LOC_FAILED, LOC_INSIDE, LOC_ON_EDGE, LOC_ON_VERTEX, LOC_OUTSIDE, finite_start, walk
+from .locate import LOC_FAILED, LOC_ON_EDGE, LOC_ON_VERTEX, LOC_OUTSIDE, finite_start, walk
 from .mesh import GHOST, NO_EDGE, S_NSLOT, Mesh, bond, kill_triangle, lnext, new_mesh, new_triangle
 from .predicates import orient2d
 

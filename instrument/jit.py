@@ -7,8 +7,9 @@ decrements each array's count atomically, which made one edge flip cost about
 1.4 us instead of 60 ns (measured).  Functions called from a ``kernel`` are
 compiled under the same flag, so they must not create heap arrays either:
 ``scratch(n)`` gives a float64 work array on the stack instead (the exact
-predicates' expansions).  Nothing here ever uses ``fastmath``: it would break
-the error-free transformations of the exact predicates.
+predicates' expansions).  No kernel may reassociate floating-point
+arithmetic (numba's fast-math option): that would break the error-free
+transformations of the exact predicates.
 """
 
 import numpy as np

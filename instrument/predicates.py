@@ -85,7 +85,6 @@ from __future__ import annotations
 import math
 from fractions import Fraction
 
-import numpy as np
 from numba import njit, objmode
 
 from .jit import iscratch, scratch

@@ -14,7 +14,7 @@ from . import cdt
 from .counters import C_STEINER
 from .carve import infect_hull, locate_points, plague, spread_regions
 from .delaunay import delaunay
-from .mesh import S_NVERT, Mesh, grow_triangles, grow_vertices
+from .mesh import S_NVERT, Mesh, grow_triangles, grow_vertices, spare_triangles
 from .switches import Options
 
 
@@ -56,8 +56,7 @@ class Mesher:
             self.vmark = _widen(self.vmark, cap, 0)
             self.parent = _widen(self.parent, cap, -1.0)
             self.vtri = _widen(self.vtri, cap, -1)
-        spare = m.stamp.shape[0] - int(m.size[1]) + int(m.size[2])
-        if spare < triangles:
+        if spare_triangles(m) < triangles:
             m = grow_triangles(m, m.stamp.shape[0] + triangles)
         if int(self.segs.size[cdt.R_NREC]) + records > self.segs.marker.shape[0]:
             self.segs = cdt.grow_segs(self.segs, int(self.segs.size[cdt.R_NREC]) + records)
