@@ -8,17 +8,19 @@ the driver grows them.  One piece is recovered as follows.
    ``a b`` exists, mark it.  If a vertex ``v`` lies exactly on the ray
    (exact orientation), mark ``a v`` and continue with ``v -> b``.
 2. Otherwise walk along the segment through the triangles it crosses,
-   collecting the vertices left and right of it into two chains.  The walk
-   stops at ``b``, at a vertex exactly on the segment (the rest becomes a new
-   piece), or at a subsegment it would cross.
+   collecting the crossed edges.  The walk stops at ``b``, at a vertex
+   exactly on the segment (the rest becomes a new piece), or at a
+   subsegment it would cross.
 3. Crossing a subsegment: the two segments intersect.  The intersection point
    (computed along the crossed subsegment) becomes a new vertex that splits
    it; the piece is replaced by ``a -> p`` and ``p -> b``.
-4. Otherwise delete the crossed triangles and fill the two pseudo-polygons
-   (chain plus segment) with their constrained Delaunay triangulations: the
-   chain vertex whose circle through the base edge contains no other chain
-   vertex is the apex, and each side recurses (Anglada's algorithm, the one
-   Triangle uses to delete vertices).
+4. Otherwise flip the crossed edges away (Sloan's algorithm: flip any
+   crossed edge whose quadrilateral is strictly convex, until none crosses;
+   one always is), mark the segment, and restore the constrained Delaunay
+   property by Lawson flips of the new edges.  Flipping, unlike deleting the
+   crossed triangles and re-filling the two sides, needs no assumption about
+   the shape of the crossed region (it can wrap around a vertex whose whole
+   star it crosses).
 
 Subsegment records: every constrained edge piece has its own record (marker,
 input segment); ``seg[e]`` holds the record id on both sides of the edge.
@@ -31,17 +33,18 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .counters import C_CREATED, C_DELETED, C_INCIRCLE, C_ORIENT, C_STEINER
-from .insert import lawson, split_edge, star_edges
+from .counters import C_ORIENT, C_STEINER
+from .insert import flip, lawson, should_flip, split_edge, split_triangle, star_edges
 from .jit import kernel
-from .locate import LOC_ON_VERTEX, walk
-from .mesh import NO_EDGE, NO_SEG, S_NSLOT, S_NVERT, bond, kill_triangle, lnext, lprev, new_triangle, spare_triangles
-from .predicates import incircle, orient2d
+from .locate import LOC_INSIDE, LOC_ON_EDGE, LOC_ON_VERTEX, walk
+from .mesh import NO_EDGE, NO_SEG, S_NSLOT, S_NVERT, lnext, lprev, spare_triangles
+from .predicates import orient2d
 
 # status codes of insert_segments
 DONE = 0
-NEED_ROOM = 1
+NEED_ROOM = 1  # grow the mesh, records or piece stack
 FAILED = 2
+NEED_BUFFER = 3  # a segment crosses more triangles than the scratch buffer holds
 
 # Segs.size slots
 R_NREC = 0  # subsegment records in use
@@ -143,56 +146,6 @@ def mark_subsegment(m, segs, vmark, e, marker, source):
 
 
 @kernel
-def _fill(m, work, vtri, chain, outer, outer_seg, count, stack):
-    """Triangulate the pseudo-polygon ``chain[0..count-1]`` (all but the ends
-    left of ``chain[0] -> chain[count-1]``) and return its base edge.
-
-    ``outer[i]`` / ``outer_seg[i]`` are the twin and subsegment record of the
-    polygon edge between ``chain[i]`` and ``chain[i+1]``.
-    """
-    xy = m.xy
-    root = -1
-    sp = 0
-    stack[0] = 0
-    stack[1] = count - 1
-    stack[2] = -1
-    sp = 1
-    while sp > 0:
-        sp -= 1
-        i = stack[3 * sp]
-        j = stack[3 * sp + 1]
-        pe = stack[3 * sp + 2]
-        if j == i + 1:  # a polygon edge: link to the outside
-            bond(m, pe, outer[i])
-            m.seg[pe] = outer_seg[i]
-            continue
-        ci = chain[i]
-        cj = chain[j]
-        k = i + 1
-        for q in range(i + 2, j):
-            work[C_INCIRCLE] += 1
-            ck = chain[k]
-            cq = chain[q]
-            if incircle(xy[ci, 0], xy[ci, 1], xy[cj, 0], xy[cj, 1], xy[ck, 0], xy[ck, 1], xy[cq, 0], xy[cq, 1]) > 0.0:
-                k = q
-        t = new_triangle(m, chain[k], ci, cj)
-        work[C_CREATED] += 1
-        _remember(m, vtri, t)
-        if pe < 0:
-            root = 3 * t
-        else:
-            bond(m, 3 * t, pe)
-        stack[3 * sp] = i
-        stack[3 * sp + 1] = k
-        stack[3 * sp + 2] = 3 * t + 2
-        stack[3 * sp + 3] = k
-        stack[3 * sp + 4] = j
-        stack[3 * sp + 5] = 3 * t + 1
-        sp += 2
-    return root
-
-
-@kernel
 def _turn_to(m, work, a, b, e0):
     """Turn around ``a`` (from edge ``e0``, origin ``a``) to the edge ``e``
     (origin ``a``) whose triangle contains the start of the ray ``a -> b``.
@@ -233,7 +186,8 @@ def _recover(m, work, segs, vmark, vtri, a, b, marker, source, buf, state):
     """Recover one piece ``a -> b`` of input segment ``source``.
 
     Returns ``(kind, v, e)``: kind 0 = done; 1 = continue with ``v -> b``;
-    2 = the walk met subsegment edge ``e`` (the caller splits it); 3 = failed.
+    2 = the walk met subsegment edge ``e`` (the caller splits it); 3 = failed;
+    4 = ``buf`` is too small (nothing was changed).
     """
     xy = m.xy
     e0 = _find_vertex(m, work, vtri, a, state)
@@ -250,25 +204,12 @@ def _recover(m, work, segs, vmark, vtri, a, b, marker, source, buf, state):
         x = m.corner[e]
         mark_subsegment(m, segs, vmark, lprev(e), marker, source)
         return (0 if x == b else 1), x, -1
-    # Walk through the crossed triangles.  Chains start at a.  buf holds ten
-    # blocks of n: left chain, its twins and records, the same for the right
-    # chain, the dead triangles, and three blocks of stack for _fill.
-    n = buf.shape[0] // 10
-    left, lout, lseg = buf[0:n], buf[n:2 * n], buf[2 * n:3 * n]
-    right, rout, rseg = buf[3 * n:4 * n], buf[4 * n:5 * n], buf[5 * n:6 * n]
-    dead = buf[6 * n:7 * n]
-    ndead = 1
-    dead[0] = e // 3
-    left[0] = a
-    right[0] = a
-    left[1] = m.corner[e]
-    lout[0] = m.twin[lprev(e)]
-    lseg[0] = m.seg[lprev(e)]
-    right[1] = m.corner[lprev(e)]
-    rout[0] = m.twin[e]
-    rseg[0] = m.seg[e]
-    nl = 2
-    nr = 2
+    # Walk through the crossed triangles, queueing the crossed edges as
+    # vertex pairs (right, left): flips change edge ids, not vertex pairs.
+    n = buf.shape[0] // 4
+    qr, ql = buf[0:n], buf[n:2 * n]
+    stack = buf[2 * n:]
+    nq = 0
     c = lnext(e)  # the crossed edge, right -> left
     ax, ay, bx, by = xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1]
     end = -1
@@ -276,10 +217,13 @@ def _recover(m, work, segs, vmark, vtri, a, b, marker, source, buf, state):
         if m.seg[c] != NO_SEG:
             return 2, -1, c
         tw = m.twin[c]
-        if tw == NO_EDGE or ndead >= n or nl >= n or nr >= n:
+        if tw == NO_EDGE:
             return 3, -1, -1
-        dead[ndead] = tw // 3
-        ndead += 1
+        if nq >= n:
+            return 4, -1, -1
+        qr[nq] = m.corner[lnext(c)]
+        ql[nq] = m.corner[lprev(c)]
+        nq += 1
         y = m.corner[tw]
         if y == b:
             s = 0.0
@@ -287,56 +231,156 @@ def _recover(m, work, segs, vmark, vtri, a, b, marker, source, buf, state):
             work[C_ORIENT] += 1
             s = orient2d(ax, ay, bx, by, xy[y, 0], xy[y, 1])
         if s > 0.0:
-            lout[nl - 1] = m.twin[lprev(tw)]
-            lseg[nl - 1] = m.seg[lprev(tw)]
-            left[nl] = y
-            nl += 1
             c = lnext(tw)
         elif s < 0.0:
-            rout[nr - 1] = m.twin[lnext(tw)]
-            rseg[nr - 1] = m.seg[lnext(tw)]
-            right[nr] = y
-            nr += 1
             c = lprev(tw)
         else:  # y is b, or a vertex exactly on the segment
-            lout[nl - 1] = m.twin[lprev(tw)]
-            lseg[nl - 1] = m.seg[lprev(tw)]
-            left[nl] = y
-            nl += 1
-            rout[nr - 1] = m.twin[lnext(tw)]
-            rseg[nr - 1] = m.seg[lnext(tw)]
-            right[nr] = y
-            nr += 1
             end = y
-    for i in range(ndead):
-        kill_triangle(m, dead[i])
-        work[C_DELETED] += 1
-    stack = buf[7 * n:]
-    top = _fill(m, work, vtri, left, lout, lseg, nl, stack)
-    # the right chain, reversed, lies left of end -> a
-    for i in range(nr // 2):
-        j = nr - 1 - i
-        right[i], right[j] = right[j], right[i]
-    for i in range((nr - 1) // 2):
-        j = nr - 2 - i
-        rout[i], rout[j] = rout[j], rout[i]
-        rseg[i], rseg[j] = rseg[j], rseg[i]
-    bottom = _fill(m, work, vtri, right, rout, rseg, nr, stack)
-    bond(m, top, bottom)
-    mark_subsegment(m, segs, vmark, top, marker, source)
+    if not _flip_out(m, work, vtri, a, end, qr, ql, nq, n, stack, state):
+        return 3, -1, -1
+    e = _edge(m, work, vtri, a, end, state)
+    if e < 0:
+        return 3, -1, -1
+    mark_subsegment(m, segs, vmark, e, marker, source)
+    if not _restore(m, work, vtri, stack, state):
+        return 3, -1, -1
     return (0 if end == b else 1), end, -1
 
 
 @kernel
-def _split_at_crossing(m, work, segs, vmark, vtri, a, b, c, stack, parent, state):
-    """Split subsegment edge ``c`` where segment ``a b`` crosses it.
+def _edge(m, work, vtri, u, v, state):
+    """The edge ``u -> v``, or -1 if the two are not joined."""
+    e0 = _find_vertex(m, work, vtri, u, state)
+    if e0 < 0:
+        return -1
+    e = e0
+    for _ in range(m.stamp.shape[0]):  # counter-clockwise around u
+        if m.corner[lprev(e)] == v:
+            return e
+        nxt = m.twin[lprev(e)]
+        if nxt == NO_EDGE or nxt == e0:
+            break
+        e = nxt
+    e = e0
+    for _ in range(m.stamp.shape[0]):  # clockwise, for a vertex on the boundary
+        tw = m.twin[e]
+        if tw == NO_EDGE:
+            break
+        e = lnext(tw)
+        if e == e0:
+            break
+        if m.corner[lprev(e)] == v:
+            return e
+    return -1
 
-    Returns ``(v, snapped)``: ``v`` is the new vertex, or ``-1`` if the tables
-    are full.  If the crossing point rounds onto an existing vertex (three
-    segments through one point, or nearly parallel segments), no vertex is
-    made: ``v`` is that vertex and ``snapped`` is True when it is not an
-    endpoint of ``c`` (the caller then re-routes the crossed subsegment
-    through ``v``).
+
+@kernel
+def _flip_and_remember(m, work, vtri, e):
+    t1 = flip(m, work, e)
+    _remember(m, vtri, t1)
+    _remember(m, vtri, m.twin[3 * t1 + 1] // 3)
+    return t1
+
+
+@kernel
+def _flip_out(m, work, vtri, a, b, qr, ql, nq, n, stack, state):
+    """Flip every queued edge (a circular queue of ``nq`` vertex pairs that
+    cross ``a b``) until none crosses; new edges that do not cross go on
+    ``stack`` (from ``stack[0]`` = count) for the Delaunay pass."""
+    xy = m.xy
+    ax, ay, bx, by = xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1]
+    stack[0] = 0
+    head = 0
+    left = nq
+    tries = 0
+    while left > 0:
+        tries += 1
+        if tries > 4 * nq * nq + 64:  # Sloan's loop always finds a flip
+            return False
+        u = qr[head]
+        v = ql[head]
+        head = (head + 1) % n
+        left -= 1
+        e = _edge(m, work, vtri, u, v, state)
+        if e < 0:
+            return False
+        x = m.corner[e]
+        y = m.corner[m.twin[e]]
+        # the flipped triangles (x, u, y) and (x, y, v) must be counter-clockwise
+        work[C_ORIENT] += 2
+        convex = (
+            orient2d(xy[x, 0], xy[x, 1], xy[u, 0], xy[u, 1], xy[y, 0], xy[y, 1]) > 0.0
+            and orient2d(xy[x, 0], xy[x, 1], xy[y, 0], xy[y, 1], xy[v, 0], xy[v, 1]) > 0.0
+        )
+        if not convex:
+            qr[(head + left) % n] = u
+            ql[(head + left) % n] = v
+            left += 1
+            continue
+        _flip_and_remember(m, work, vtri, e)
+        work[C_ORIENT] += 2
+        sx = orient2d(ax, ay, bx, by, xy[x, 0], xy[x, 1])
+        sy = orient2d(ax, ay, bx, by, xy[y, 0], xy[y, 1])
+        if x != a and x != b and y != a and y != b and sx * sy < 0.0:
+            # still crosses: queue it again, right end first
+            r, l = (x, y) if sx < 0.0 else (y, x)
+            qr[(head + left) % n] = r
+            ql[(head + left) % n] = l
+            left += 1
+        else:
+            k = stack[0]
+            if 2 * k + 3 > stack.shape[0]:
+                return False
+            stack[2 * k + 1] = x
+            stack[2 * k + 2] = y
+            stack[0] = k + 1
+    return True
+
+
+@kernel
+def _restore(m, work, vtri, stack, state):
+    """Lawson's flips over the edges (vertex pairs) on ``stack`` until every
+    unconstrained one is locally Delaunay; each flip queues its quadrilateral's
+    four sides."""
+    k = stack[0]
+    while k > 0:
+        k -= 1
+        u = stack[2 * k + 1]
+        v = stack[2 * k + 2]
+        e = _edge(m, work, vtri, u, v, state)
+        if e < 0 or not should_flip(m, work, e):  # flipped away since, or fine
+            continue
+        x = np.int64(m.corner[e])
+        y = np.int64(m.corner[m.twin[e]])
+        if 2 * (k + 4) + 1 > stack.shape[0]:
+            return False
+        _flip_and_remember(m, work, vtri, e)
+        for side in range(4):  # the quadrilateral x, u, y, v
+            stack[2 * k + 1] = (x, u, y, v)[side]
+            stack[2 * k + 2] = (u, y, v, x)[side]
+            k += 1
+    return True
+
+
+@kernel
+def _near(xy, v, px, py, tol):
+    return abs(xy[v, 0] - px) <= tol and abs(xy[v, 1] - py) <= tol
+
+
+@kernel
+def _split_at_crossing(m, work, segs, vmark, vtri, a, b, c, stack, parent, state):
+    """Make a vertex where segment ``a b`` crosses subsegment edge ``c``.
+
+    Returns ``(v, reroute)``, ``v = -1`` if the tables are full.  The
+    crossing point is rounded, so it is inserted where it actually lies:
+    exactly on ``c`` it splits ``c``; anywhere else (or on an existing
+    vertex) ``reroute`` is True and the caller re-routes ``c`` through it.
+    The mesh stays a valid triangulation either way; forcing a rounded
+    point onto ``c`` could fold it.  A point within a few units in the last
+    place of one of the four endpoints is taken to be that endpoint: a
+    crossing vertex made earlier is only nearly on its lines, so later
+    segments through the same point would otherwise cross them again a
+    rounding error away, for ever.
     """
     xy = m.xy
     nv = m.size[S_NVERT]
@@ -353,13 +397,21 @@ def _split_at_crossing(m, work, segs, vmark, vtri, a, b, c, stack, parent, state
         t = min(max(t, 0.0), 1.0)
     px = xy[right, 0] + t * tx
     py = xy[right, 1] + t * ty
-    if px == xy[right, 0] and py == xy[right, 1]:
+    tol = 2.0**-48 * (abs(px) + abs(py)) + 1e-300
+    if _near(xy, right, px, py, tol):
         return right, False
-    if px == xy[left, 0] and py == xy[left, 1]:
+    if _near(xy, left, px, py, tol):
         return left, False
+    if _near(xy, a, px, py, tol):
+        return a, True
+    if _near(xy, b, px, py, tol):
+        return b, True
     status, e = walk(m, work, c // 3, px, py, state, 4 * m.stamp.shape[0] + 64)
     if status == LOC_ON_VERTEX:
         return m.corner[lnext(e)], True
+    if status != LOC_INSIDE and status != LOC_ON_EDGE:
+        # rounded off the mesh (c is on the boundary): use c's nearer end
+        return (right if t < 0.5 else left), False
     half = new_record(segs, segs.marker[r], segs.source[r])
     if half < 0:
         return -1, False
@@ -371,26 +423,38 @@ def _split_at_crossing(m, work, segs, vmark, vtri, a, b, c, stack, parent, state
     m.size[S_NVERT] = nv + 1
     vmark[nv] = segs.marker[r]
     work[C_STEINER] += 1
-    on_line = split_edge(m, work, c, nv)  # edge nv -> left, first new triangle
-    # the half nv -> left gets the new record, on both sides
-    m.seg[on_line] = half
-    if m.twin[on_line] != NO_EDGE:
-        m.seg[m.twin[on_line]] = half
-    n = star_edges(m, on_line // 3, stack)
+    reroute = True
+    if status == LOC_INSIDE:
+        first = split_triangle(m, work, e // 3, nv)
+    else:
+        reroute = e != c and e != m.twin[c]
+        split = m.seg[e]
+        on_line = split_edge(m, work, e, nv)  # edge nv -> dest(e), first new triangle
+        if split != NO_SEG:  # the half nv -> dest(e) gets the new record
+            m.seg[on_line] = half
+            if m.twin[on_line] != NO_EDGE:
+                m.seg[m.twin[on_line]] = half
+        first = on_line // 3
+    n = star_edges(m, first, stack)
     last = lawson(m, work, stack, n)
     _remember(m, vtri, last)
-    return nv, False
+    return nv, reroute
 
 
 @kernel
-def insert_segments(m, work, segs, pieces, in_marker, vmark, vtri, buf, parent, state):
+def insert_segments(m, work, segs, pieces, in_marker, vmark, vtri, buf, parent, state, steps):
     """Recover every piece ``(a, b, input segment)`` on the ``pieces`` stack
     (the top is next); ``in_marker`` holds the input segments' markers.
 
-    Returns DONE, NEED_ROOM (grow the arrays and call again: nothing was
-    half done) or FAILED.
+    Returns DONE, NEED_ROOM or NEED_BUFFER (grow and call again: nothing was
+    half done) or FAILED.  ``steps = [pieces handled, input segments]``:
+    the pieces handled are bounded by the segments and vertices, so that
+    rounded crossing points that re-route each other cannot loop for ever.
     """
     while segs.size[R_SP] > 0:
+        if steps[0] > 8 * (steps[1] + m.size[S_NVERT]) + 1024:
+            return FAILED
+        steps[0] += 1
         if (
             m.size[S_NVERT] >= m.xy.shape[0]
             or spare_triangles(m) < 8
@@ -402,25 +466,38 @@ def insert_segments(m, work, segs, pieces, in_marker, vmark, vtri, buf, parent, 
         a = pieces[sp, 0]
         b = pieces[sp, 1]
         src = pieces[sp, 2]
-        kind, v, c = _recover(m, work, segs, vmark, vtri, a, b, in_marker[src], src, buf, state)
+        marker = 1 if src < 0 else in_marker[src]  # -c hull segments have no input row
+        kind, v, c = _recover(m, work, segs, vmark, vtri, a, b, marker, src, buf, state)
         if kind == 0:
             segs.size[R_SP] = sp
         elif kind == 1:
             pieces[sp, 0] = v
+        elif kind == 4:
+            steps[0] -= 1
+            return NEED_BUFFER
         elif kind == 2:
-            cross = buf[7 * (buf.shape[0] // 10):]
+            cross = buf
             r = m.seg[c]
             cr = m.corner[lnext(c)]
             cl = m.corner[lprev(c)]
-            p, snapped = _split_at_crossing(m, work, segs, vmark, vtri, a, b, c, cross, parent, state)
+            p, reroute = _split_at_crossing(m, work, segs, vmark, vtri, a, b, c, cross, parent, state)
             if p < 0:
                 return NEED_ROOM
-            if snapped:
+            if reroute:
                 # re-route the crossed subsegment through p: free the edge
                 # and queue its two halves as pieces of its own segment
+                c = _edge(m, work, vtri, cr, cl, state)  # its id may have changed
+                if c < 0:
+                    return FAILED
                 m.seg[c] = NO_SEG
                 if m.twin[c] != NO_EDGE:
                     m.seg[m.twin[c]] = NO_SEG
+                # freed, the edge may no longer be Delaunay
+                cross[0] = 1
+                cross[1] = cr
+                cross[2] = cl
+                if not _restore(m, work, vtri, cross, state):
+                    return FAILED
                 src_c = segs.source[r]
                 pieces[sp + 1, 0] = cr
                 pieces[sp + 1, 1] = p

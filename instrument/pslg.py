@@ -118,36 +118,71 @@ def recover_segments(ms: Mesher, rows: np.ndarray, seg_markers: np.ndarray) -> N
     """Insert the segments ``rows`` (from ``clean_segments``) in input order."""
     if rows.shape[0] == 0 or int(ms.m.size[1]) == 0:
         return
+    rows, in_marker = _merge_duplicates(rows, np.asarray(seg_markers, dtype=np.int32))
     cdt.build_vertex_edges(ms.m, ms.vtri)
     pieces = np.zeros((rows.shape[0] + 64, 3), dtype=np.int64)
     pieces[: rows.shape[0]] = rows[::-1]
     ms.segs.size[cdt.R_SP] = rows.shape[0]
-    in_marker = np.asarray(seg_markers, dtype=np.int32)
+    steps = np.array([0, rows.shape[0]], dtype=np.int64)
+    # every pair of segments crosses at most once
+    most_vertices = ms.n_vertices + rows.shape[0] * (rows.shape[0] + 1) // 2
+    buf = np.zeros(4 * (ms.n_vertices + 64), dtype=np.int64)
     while True:
-        buf = np.zeros(10 * (ms.n_vertices + 16), dtype=np.int64)
         status = cdt.insert_segments(
-            ms.m, ms.work, ms.segs, pieces, in_marker, ms.vmark, ms.vtri, buf, ms.parent, ms.state
+            ms.m, ms.work, ms.segs, pieces, in_marker, ms.vmark, ms.vtri, buf, ms.parent, ms.state, steps
         )
         if status == cdt.DONE:
             if ms.work[C_STEINER] and cdt.count_inverted(ms.m):
                 # rounded intersection points of nearly concurrent segments
                 # can fold the mesh; never hand back a folded mesh
-                raise RuntimeError(
-                    "segments cross at points too close together for double precision "
-                    "(nearly concurrent or overlapping segments); the constrained "
-                    "triangulation could not be built"
-                )
+                raise RuntimeError(_TOO_CLOSE)
             return
-        if status == cdt.FAILED:
+        # a segment cannot cross more triangles than there are
+        lost = status == cdt.NEED_BUFFER and buf.shape[0] > 8 * (ms.m.stamp.shape[0] + 64)
+        if status == cdt.FAILED or lost or ms.n_vertices > most_vertices:
             a, b, i = pieces[int(ms.segs.size[cdt.R_SP]) - 1]
             raise RuntimeError(
                 f"could not recover segment {i} between ({ms.m.xy[a, 0]:.17g}, {ms.m.xy[a, 1]:.17g}) and "
-                f"({ms.m.xy[b, 0]:.17g}, {ms.m.xy[b, 1]:.17g}): its crossings with nearly parallel "
-                "segments fall on their endpoints in floating point"
+                f"({ms.m.xy[b, 0]:.17g}, {ms.m.xy[b, 1]:.17g}): " + _TOO_CLOSE
             )
+        if status == cdt.NEED_BUFFER:
+            buf = np.zeros(2 * buf.shape[0], dtype=np.int64)
+            continue
         ms.grow(vertices=ms.n_vertices // 2 + 16, triangles=ms.m.stamp.shape[0] // 2 + 64, records=ms.segs.marker.shape[0])
-        if int(ms.segs.size[cdt.R_SP]) + 2 > pieces.shape[0]:
+        if int(ms.segs.size[cdt.R_SP]) + 4 > pieces.shape[0]:
             pieces = _widen(pieces, 2 * pieces.shape[0], 0)
+
+
+_TOO_CLOSE = (
+    "segments cross at points too close together for double precision "
+    "(nearly concurrent or overlapping segments); the constrained triangulation could not be built"
+)
+
+
+def _merge_duplicates(rows: np.ndarray, markers: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Drop repeats of a segment (same two endpoints, either direction).
+
+    The first copy is kept and takes the first non-zero marker among its
+    copies, as recovering the copies one after another would do; dropping
+    them up front keeps a copy from crossing its own first copy after a
+    crossing point has bent that (rounded crossing points are not exactly on
+    the line).
+    """
+    key = np.sort(rows[:, :2], axis=1)
+    _, first, inverse = np.unique(key, axis=0, return_index=True, return_inverse=True)
+    inverse = inverse.ravel()
+    if first.shape[0] == rows.shape[0]:
+        return rows, markers
+    markers = markers.copy()
+    group_marker = np.zeros(first.shape[0], dtype=np.int32)
+    for i in range(rows.shape[0] - 1, -1, -1):  # the earliest non-zero wins
+        mk = markers[rows[i, 2]]
+        if mk != 0:
+            group_marker[inverse[i]] = mk
+    keep = np.sort(first)
+    kept = rows[keep]
+    markers[kept[:, 2]] = np.where(markers[kept[:, 2]] == 0, group_marker[inverse[keep]], markers[kept[:, 2]])
+    return kept, markers
 
 
 def enclose_hull(ms: Mesher) -> None:

@@ -198,3 +198,35 @@ def test_random_pslgs_never_fail_and_pass_the_checker(d, opts):
     assert w["triangles_created"] - w["triangles_deleted"] == len(r.get("triangles", []))
     if opts == "pO":  # nothing but concavities removed: the unit square stays whole
         assert mesh_area(r) == pytest.approx(1.0, rel=1e-12)
+
+
+def _tangled(seed: int) -> tuple[dict, str]:
+    """A unit square with up to 14 grid points and 12 random segments: many
+    crossings, overlaps, duplicates and near-concurrent crossing points."""
+    import random
+
+    rng = random.Random(seed)
+    n = rng.randint(3, 14)
+    grid = rng.choice([4, 8, 1000])
+    pts = [(rng.randint(0, grid) / grid, rng.randint(0, grid) / grid) for _ in range(n)]
+    pts += [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]
+    k = len(pts)
+    segs = [[k - 4, k - 3], [k - 3, k - 2], [k - 2, k - 1], [k - 1, k - 4]]
+    segs += [[rng.randint(0, k - 1), rng.randint(0, k - 1)] for _ in range(rng.randint(0, 12))]
+    holes = [(rng.random(), rng.random()) for _ in range(rng.randint(0, 2))]
+    d = {"vertices": np.array(pts), "segments": np.array(segs)}
+    if holes:
+        d["holes"] = np.array(holes)
+    return d, rng.choice(["p", "pc", "pO"])
+
+
+# Seeds that once failed: 368 crosses the whole star of a vertex, 1368
+# repeats a segment that a crossing had bent, 6198 has three segments
+# through one point, 1001000 and 1002494 fold under forced rounding.
+@pytest.mark.parametrize("seed", [368, 1368, 2190, 6198, 1001000, 1002494, *range(300)])
+def test_tangled_segments_give_valid_cdts(seed):
+    d, opts = _tangled(seed)
+    r = instrument.triangulate(d, opts)
+    assert check_mesh(r) == []
+    w = r.work
+    assert w["triangles_created"] - w["triangles_deleted"] == len(r.get("triangles", []))
