@@ -56,6 +56,7 @@ class Segs(NamedTuple):
 
     marker: np.ndarray  # (R,) int32 boundary marker
     source: np.ndarray  # (R,) int32 input segment it lies on, -1 for hull segments
+    ends: np.ndarray  # (R, 2) int32 the segment's end vertices (the piece first recovered)
     size: np.ndarray  # (2,) int64, see R_*
 
 
@@ -63,6 +64,7 @@ def new_segs(capacity: int) -> Segs:
     return Segs(
         marker=np.zeros(capacity, dtype=np.int32),
         source=np.full(capacity, -1, dtype=np.int32),
+        ends=np.full((capacity, 2), -1, dtype=np.int32),
         size=np.zeros(2, dtype=np.int64),
     )
 
@@ -71,9 +73,11 @@ def grow_segs(s: Segs, capacity: int) -> Segs:
     cap = max(capacity, 2 * s.marker.shape[0])
     marker = np.zeros(cap, dtype=np.int32)
     source = np.full(cap, -1, dtype=np.int32)
+    ends = np.full((cap, 2), -1, dtype=np.int32)
     marker[: s.marker.shape[0]] = s.marker
     source[: s.source.shape[0]] = s.source
-    return Segs(marker=marker, source=source, size=s.size)
+    ends[: s.ends.shape[0]] = s.ends
+    return Segs(marker=marker, source=source, ends=ends, size=s.size)
 
 
 @kernel
@@ -109,14 +113,16 @@ def _remember(m, vtri, t):
 
 
 @kernel
-def new_record(segs, marker, source):
-    """A new subsegment record; -1 if the table is full."""
+def new_record(segs, marker, source, a, b):
+    """A new subsegment record on the segment from ``a`` to ``b``; -1 if the table is full."""
     r = segs.size[R_NREC]
     if r >= segs.marker.shape[0]:
         return -1
     segs.size[R_NREC] = r + 1
     segs.marker[r] = marker
     segs.source[r] = source
+    segs.ends[r, 0] = a
+    segs.ends[r, 1] = b
     return r
 
 
@@ -130,7 +136,7 @@ def mark_subsegment(m, segs, vmark, e, marker, source):
     """
     old = m.seg[e]
     if old == NO_SEG:
-        old = new_record(segs, marker, source)
+        old = new_record(segs, marker, source, m.corner[lnext(e)], m.corner[lprev(e)])
         m.seg[e] = old
         if m.twin[e] != NO_EDGE:
             m.seg[m.twin[e]] = old
@@ -412,14 +418,16 @@ def _split_at_crossing(m, work, segs, vmark, vtri, a, b, c, stack, parent, state
     if status != LOC_INSIDE and status != LOC_ON_EDGE:
         # rounded off the mesh (c is on the boundary): use c's nearer end
         return (right if t < 0.5 else left), False
-    half = new_record(segs, segs.marker[r], segs.source[r])
+    half = new_record(segs, segs.marker[r], segs.source[r], segs.ends[r, 0], segs.ends[r, 1])
     if half < 0:
         return -1, False
     xy[nv, 0] = px
     xy[nv, 1] = py
     parent[nv, 0] = right
     parent[nv, 1] = left
-    parent[nv, 2] = t
+    parent[nv, 2] = right
+    parent[nv, 3] = t
+    parent[nv, 4] = 0.0
     m.size[S_NVERT] = nv + 1
     vmark[nv] = segs.marker[r]
     work[C_STEINER] += 1

@@ -11,7 +11,9 @@ import numpy as np
 from . import counters
 from .mesh import NO_EDGE, NO_SEG, S_NVERT, live_triangles
 from .output import Result, _col, _put, edge_ends, unique_edges
+from . import quality
 from .pslg import Mesher, carve, clean_segments, enclose_hull, recover_segments, start
+from .strategies import strategy_id
 from .switches import Options, parse
 
 INPUT_KEYS = frozenset(
@@ -86,18 +88,23 @@ def _validate(tri: dict, o: Options) -> dict:
     return out
 
 
-def triangulate(tri: dict, opts: str = "", *, strategy: str = "triangle", seed: int = 0, trace: bool = False) -> Result:
+def triangulate(
+    tri: dict, opts: str = "", *, strategy: str = "triangle", seed: int = 0, trace: bool = False, steiner: str = "offcenter"
+) -> Result:
     """Triangulate, mesh or refine ``tri`` (the `triangle` package's dict) under
     Triangle's switches ``opts`` (library rules: no dash, 0-based indices).
 
     Returns a ``Result`` (a dict with the `triangle` package's keys) whose
     ``work`` attribute holds the work counters and ``warnings`` Triangle's
-    warnings (duplicate vertices, invalid segments).
+    warnings (duplicate vertices, invalid segments).  ``strategy`` picks the
+    next bad triangle (``instrument.strategies()``); ``steiner`` is
+    "offcenter" (Triangle's) or "circumcenter" (Ruppert's original points).
     """
     o = parse(opts)
     inp = _validate(tri, o)
-    if o.r or o.quality:
-        raise NotImplementedError("refinement (r) and quality meshing (q, a, u, D) are not implemented yet")
+    if o.r or o.u:
+        raise NotImplementedError("refining an existing mesh (r) and the user test (u) are not implemented yet")
+    strategy_id(strategy)  # reject unknown names before any work
     work = counters.new_work()
     xy = inp["vertices"]
     spare = 2 * len(inp.get("segments", ())) + 16
@@ -110,11 +117,16 @@ def triangulate(tri: dict, opts: str = "", *, strategy: str = "triangle", seed: 
         if o.c:
             enclose_hull(ms)
         carve(ms, o, inp.get("holes"), inp.get("regions"), xy)
-    elif o.c:
+    elif o.c or o.quality:  # refinement needs the hull as segments
         enclose_hull(ms)
     else:
         _mark_hull_vertices(ms)
+    rows = None
+    if o.quality and int(ms.m.size[3]) > 0:
+        rows = quality.run(ms, o, strategy=strategy, steiner=steiner, trace=trace)
     result = _assemble(ms, inp, o)
+    if rows is not None:
+        result.trace = rows
     result.work = counters.as_dict(work)
     result.warnings = ms.warnings
     return result
@@ -135,10 +147,10 @@ def _vertex_attributes(ms: Mesher, attrs: np.ndarray, nv: int) -> np.ndarray:
     out = np.zeros((nv, attrs.shape[1]))
     out[: ms.n_input] = attrs
     for v in range(ms.n_input, nv):  # in creation order: parents come first
-        p0, p1, t = ms.parent[v]
+        p0, p1, p2, s, t = ms.parent[v]
         if p0 >= 0:
-            a0, a1 = out[int(p0)], out[int(p1)]
-            out[v] = a0 + t * (a1 - a0)
+            a0 = out[int(p0)]
+            out[v] = a0 + s * (out[int(p1)] - a0) + t * (out[int(p2)] - a0)
     return out
 
 

@@ -95,3 +95,65 @@ def walk(m, work, t, px, py, state, max_steps):
                 return LOC_ON_VERTEX, e
         return LOC_ON_EDGE, zero_edge  # unreachable for exact predicates
     return LOC_FAILED, -1
+
+
+LOC_BLOCKED = 5  # the straight path crosses a subsegment or leaves the mesh
+
+
+@kernel
+def line_walk(m, work, t, px, py, max_steps):
+    """Locate ``(px, py)`` by walking the straight line to it from the centroid
+    of triangle ``t``, stopping at subsegments (refinement's rule: a point
+    across a segment from the triangle that wants it is not inserted).
+
+    Returns ``(status, e)`` as ``walk`` does, or ``(LOC_BLOCKED, e)`` with the
+    subsegment or boundary edge ``e`` the line crosses.
+    """
+    xy = m.xy
+    a, b, c = m.corner[3 * t], m.corner[3 * t + 1], m.corner[3 * t + 2]
+    sx = (xy[a, 0] + xy[b, 0] + xy[c, 0]) / 3.0
+    sy = (xy[a, 1] + xy[b, 1] + xy[c, 1]) / 3.0
+    entered = -1  # the edge we came in through
+    for _ in range(max_steps):
+        work[C_WALK] += 1
+        exit_edge = -1
+        zeros = 0
+        zero_edge = -1
+        for k in range(3):
+            e = 3 * t + k
+            if e == entered:
+                continue
+            o = m.corner[lnext(e)]
+            d = m.corner[lprev(e)]
+            work[C_ORIENT] += 1
+            s = orient2d(xy[o, 0], xy[o, 1], xy[d, 0], xy[d, 1], px, py)
+            if s < 0.0:
+                # the line leaves through this edge if it passes between o and d
+                work[C_ORIENT] += 2
+                so = orient2d(sx, sy, px, py, xy[o, 0], xy[o, 1])
+                sd = orient2d(sx, sy, px, py, xy[d, 0], xy[d, 1])
+                if so <= 0.0 and sd >= 0.0:
+                    exit_edge = e
+                    break
+                if exit_edge < 0:
+                    exit_edge = e  # fallback if the line grazes a vertex
+            elif s == 0.0:
+                zeros += 1
+                zero_edge = e
+        if exit_edge < 0:
+            if zeros == 0:
+                return LOC_INSIDE, 3 * t
+            if zeros == 1:
+                return LOC_ON_EDGE, zero_edge
+            for k in range(3):
+                e = 3 * t + k
+                v = m.corner[lnext(e)]
+                if xy[v, 0] == px and xy[v, 1] == py:
+                    return LOC_ON_VERTEX, e
+            return LOC_ON_EDGE, zero_edge
+        tw = m.twin[exit_edge]
+        if tw == NO_EDGE or m.seg[exit_edge] >= 0:
+            return LOC_BLOCKED, exit_edge
+        t = tw // 3
+        entered = tw
+    return LOC_FAILED, -1

@@ -27,7 +27,7 @@ class Mesher:
     n_input: int
     dup: np.ndarray  # duplicate_of for input vertices
     vmark: np.ndarray  # (V,) int32 vertex markers
-    parent: np.ndarray  # (V, 3): new vertex = xy[p0] + p2 * (xy[p1] - xy[p0])
+    parent: np.ndarray  # (V, 5) p0, p1, p2, s, t: a new vertex's attributes are a0 + s (a1 - a0) + t (a2 - a0)
     segs: cdt.Segs
     vtri: np.ndarray  # (V,) int64 an edge leaving each vertex
     state: np.ndarray = field(default_factory=lambda: np.array([12345], dtype=np.int64))
@@ -83,7 +83,7 @@ def start(xy: np.ndarray, markers: np.ndarray, work: np.ndarray, seed: int, spar
         n_input=n,
         dup=dup,
         vmark=vmark,
-        parent=np.full((cap, 3), -1.0),
+        parent=np.full((cap, 5), -1.0),
         segs=cdt.new_segs(max(16, 2 * spare_vertices)),
         vtri=np.full(cap, -1, dtype=np.int64),
         n_triangles_initial=int(m.size[3]),

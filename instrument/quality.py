@@ -1,0 +1,142 @@
+"""Driving the refinement kernel: set it up from the switches, grow its arrays
+when it asks, turn its precision failure into Triangle's error."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from . import cdt, refine as rf
+from .pslg import Mesher, _widen
+from .strategies import strategy_id
+from .switches import Options
+
+STEINER = ("offcenter", "circumcenter")
+
+_TRACE_KINDS = ("segment", "circumcenter", "offcenter", "rejected", "deleted")
+
+
+class PrecisionError(RuntimeError):
+    """Triangle's "Ran out of precision" failure: segments too short to split."""
+
+
+def _new_refiner(ms: Mesher, o: Options, strategy: str, steiner: str, trace: bool) -> rf.Refiner:
+    m = ms.m
+    slots = m.stamp.shape[0]
+    nvcap = m.xy.shape[0]
+    ipar = np.zeros(rf.I_NPAR, dtype=np.int64)
+    par = np.zeros(rf.P_NPAR)
+    ipar[rf.I_STRATEGY] = strategy_id(strategy)
+    ipar[rf.I_D] = int(o.D)
+    ipar[rf.I_Y] = o.Y
+    ipar[rf.I_FIXAREA] = int(o.max_area > 0)
+    ipar[rf.I_VARAREA] = int(o.var_area)
+    ipar[rf.I_BUDGET] = o.S
+    ipar[rf.I_OFFCENTER] = int(steiner == "offcenter")
+    ipar[rf.I_ANGLE] = int(o.q and o.min_angle > 0)
+    ipar[rf.I_CURRENT] = -1
+    theta = math.radians(o.min_angle) if o.q else 0.0
+    good = math.cos(theta) ** 2
+    par[rf.P_GOODANGLE] = good
+    par[rf.P_LENS] = (2.0 * good - 1.0) ** 2
+    # the off-center sits at 0.95 of the distance where the edge subtends theta
+    par[rf.P_OFFCONSTANT] = 0.475 * math.sqrt((1.0 + math.cos(theta)) / (1.0 - math.cos(theta))) if theta > 0 else 0.0
+    par[rf.P_MAXAREA] = o.max_area
+    vtype = np.zeros(nvcap, dtype=np.int8)
+    area = ms.region_area if ms.region_area is not None else np.full(slots, -1.0)
+    attr = ms.region_attr if ms.region_attr is not None else np.zeros(slots)
+    return rf.Refiner(
+        ipar=ipar,
+        par=par,
+        vtype=vtype,
+        area=area,
+        attr=attr,
+        hkey=np.zeros(slots + 16),
+        hseq=np.zeros(slots + 16, dtype=np.int64),
+        htri=np.zeros(slots + 16, dtype=np.int64),
+        hstamp=np.zeros(slots + 16, dtype=np.int64),
+        enc=np.zeros((3 * slots + 16, 2), dtype=np.int32),
+        cav=np.zeros(slots, dtype=np.int64),
+        fan=np.zeros(slots, dtype=np.int64),
+        seen=np.zeros(slots, dtype=np.int8),
+        bnd=np.zeros((slots, 4), dtype=np.int64),
+        bval=np.zeros((slots, 2)),
+        vslot=np.full(nvcap, -1, dtype=np.int64),
+        trace=np.zeros((1024 if trace else 0, 5), dtype=np.int64),
+    )
+
+
+def _grow(ms: Mesher, r: rf.Refiner) -> rf.Refiner:
+    """Double whatever the kernel may have run out of."""
+    m = ms.m
+    ms.grow(vertices=ms.n_vertices + 16, triangles=m.stamp.shape[0] + 64, records=ms.segs.marker.shape[0])
+    slots = ms.m.stamp.shape[0]
+    nvcap = ms.m.xy.shape[0]
+    heap = max(2 * r.hkey.shape[0], slots + 16)
+    enc = r.enc
+    if enc.shape[0] < 3 * slots + 16:  # unroll the ring
+        head, tail = int(r.ipar[rf.I_EHEAD]), int(r.ipar[rf.I_ETAIL])
+        live = enc[np.arange(head, tail) % enc.shape[0]]
+        enc = np.zeros((2 * (3 * slots + 16), 2), dtype=np.int32)
+        enc[: live.shape[0]] = live
+        r.ipar[rf.I_EHEAD] = 0
+        r.ipar[rf.I_ETAIL] = live.shape[0]
+    trace = r.trace
+    if trace.shape[0] and r.ipar[rf.I_NTRACE] + 2 >= trace.shape[0]:
+        trace = _widen(trace, 2 * trace.shape[0], 0)
+    return r._replace(
+        vtype=_widen(r.vtype, nvcap, 0),
+        vslot=_widen(r.vslot, nvcap, -1),
+        area=_widen(r.area, slots, -1.0),
+        attr=_widen(r.attr, slots, 0.0),
+        hkey=_widen(r.hkey, heap, 0.0),
+        hseq=_widen(r.hseq, heap, 0),
+        htri=_widen(r.htri, heap, 0),
+        hstamp=_widen(r.hstamp, heap, 0),
+        enc=enc,
+        cav=_widen(r.cav, slots, 0),
+        fan=_widen(r.fan, slots, 0),
+        seen=_widen(r.seen, slots, 0),
+        bnd=_widen(r.bnd, slots, 0),
+        bval=_widen(r.bval, slots, 0.0),
+        trace=trace,
+    )
+
+
+def run(ms: Mesher, o: Options, *, strategy: str = "triangle", steiner: str = "offcenter", trace: bool = False) -> np.ndarray | None:
+    """Refine ``ms`` in place under ``o``; returns the trace rows if asked."""
+    if steiner not in STEINER:
+        raise ValueError(f"steiner must be one of {', '.join(STEINER)}, not {steiner!r}")
+    if o.S == 0:
+        return np.zeros((0, 5), dtype=np.int64) if trace else None
+    r = _new_refiner(ms, o, strategy, steiner, trace)
+    nin = ms.n_vertices
+    r.vtype[:nin] = rf.V_INPUT
+    cdt.build_vertex_edges(ms.m, ms.vtri)
+    rf.tally_encroached(r, ms.m)
+    while True:
+        status = rf.refine(r, ms.m, ms.segs, ms.vmark, ms.parent, ms.vtri, ms.work, ms.state)
+        if status == rf.DONE:
+            break
+        if status == rf.PRECISION:
+            a, b = int(r.ipar[rf.I_ERRV]), int(r.ipar[rf.I_ERRW])
+            xy = ms.m.xy
+            raise PrecisionError(
+                f"Ran out of precision at ({xy[a, 0]:.12g}, {xy[a, 1]:.12g}).\n"
+                f"I attempted to split a segment to a smaller size than\n"
+                f"  can be accommodated by the finite precision of\n"
+                f"  floating point arithmetic.\n"
+                f"  (segment ({xy[a, 0]:.12g}, {xy[a, 1]:.12g}) to ({xy[b, 0]:.12g}, {xy[b, 1]:.12g}))"
+            )
+        r = _grow(ms, r)
+    ms.region_area = r.area
+    if ms.region_attr is not None:
+        ms.region_attr = r.attr
+    n = int(r.ipar[rf.I_NTRACE])
+    return r.trace[:n].copy() if trace else None
+
+
+def trace_kind(code: int) -> str:
+    return _TRACE_KINDS[code]
+

@@ -1,0 +1,778 @@
+"""Ruppert's Delaunay refinement with Triangle's rules (kernels).
+
+The loop (Triangle's ``enforcequality``): split every encroached subsegment;
+queue every bad triangle; then repeatedly take the next bad triangle (the
+strategy's priority decides which), compute its off-center or circumcenter
+and insert it, unless the point lies across a subsegment or inside a
+subsegment's diametral lens (circle with -D), in which case the subsegment is
+queued and split instead.
+
+Insertion is Bowyer-Watson in the constrained triangulation: the cavity is
+every triangle reachable from the point's triangle without crossing a
+subsegment whose circumcircle strictly contains the point.  Its incircle
+tests are exactly the ones Lawson's flips would make, so the counts compare
+with Triangle's, and an encroaching point is rejected before the mesh is
+touched (Triangle inserts it and undoes the flips).  ``triangles_created``
+of an insertion is the new vertex's degree, the paper's measure.
+
+All state lives in arrays (see ``Refiner``), so the kernel can stop when an
+array is full and resume after the driver grows it.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+
+from .cdt import R_NREC, _edge, _remember, new_record
+from .counters import (
+    C_CIRCUMCENTER,
+    C_CREATED,
+    C_DELETED,
+    C_DUPLICATE,
+    C_INCIRCLE,
+    C_QUEUE_POP,
+    C_REJECTED,
+    C_SEGMENT_SPLIT,
+    C_STALE_POP,
+    C_STEINER,
+    C_UNDONE,
+    C_WALK,
+)
+from .jit import kernel
+from .locate import LOC_BLOCKED, LOC_INSIDE, LOC_ON_EDGE, LOC_ON_VERTEX, line_walk, next_random
+from .mesh import NO_EDGE, NO_SEG, S_NSLOT, S_NVERT, bond, kill_triangle, lnext, lprev, new_triangle, spare_triangles
+from .predicates import incircle, orient2d
+from .strategies import ADVERSARY, priority
+
+# vertex types
+V_INPUT = 0
+V_SEGMENT = 1
+V_FREE = 2
+
+# kernel status
+DONE = 0
+NEED_ROOM = 1
+PRECISION = 2
+
+# trace kinds
+T_SEGMENT, T_CIRCUMCENTER, T_OFFCENTER, T_REJECTED, T_DELETED = range(5)
+
+# ipar slots
+I_STRATEGY = 0
+I_D = 1  # diametral circles
+I_Y = 2  # 1: no splits of boundary subsegments, 2: of any
+I_FIXAREA = 3
+I_VARAREA = 4
+I_BUDGET = 5  # Steiner points left, -1 = unlimited
+I_OFFCENTER = 6
+I_ANGLE = 7  # the angle test is on
+I_HSIZE = 8  # heap entries
+I_SEQ = 9  # heap insertions so far
+I_EHEAD = 10  # encroached queue: next to pop
+I_ETAIL = 11  # encroached queue: next free slot
+I_NTRACE = 12
+I_PHASE = 13  # 0 split initial encroachments, 1 tally triangles, 2 main loop
+I_ERRV = 14  # precision error: the subsegment's end vertices
+I_ERRW = 15
+I_CURRENT = 16  # triangle being split, kept across a NEED_ROOM (-1 none)
+I_CURSTAMP = 17  # and its stamp when it was queued
+I_NPAR = 18
+
+P_GOODANGLE = 0  # cos^2 of the minimum angle
+P_LENS = 1  # (2 cos^2 - 1)^2: the lens test
+P_OFFCONSTANT = 2
+P_MAXAREA = 3
+P_CURKEY = 4  # key of the entry being split
+P_NPAR = 5
+
+
+class Refiner(NamedTuple):
+    """Refinement state beside the mesh."""
+
+    ipar: np.ndarray  # (I_NPAR,) int64
+    par: np.ndarray  # (P_NPAR,) float64
+    vtype: np.ndarray  # (V,) int8 V_*
+    area: np.ndarray  # (T,) float64 area bound per triangle slot, <= 0 none
+    attr: np.ndarray  # (T,) float64 regional attribute per triangle slot
+    hkey: np.ndarray  # (H,) heap of bad triangles: key,
+    hseq: np.ndarray  # insertion number (ties: earlier first),
+    htri: np.ndarray  # triangle slot,
+    hstamp: np.ndarray  # and its stamp when queued
+    enc: np.ndarray  # (E, 2) int32 ring of encroached subsegments (end vertices)
+    cav: np.ndarray  # (T,) int64 scratch: cavity triangles
+    fan: np.ndarray  # (T,) int64 scratch: the triangles an insertion made
+    seen: np.ndarray  # (T,) int8 scratch: 1 in the cavity, 2 tested outside
+    bnd: np.ndarray  # (T, 4) int64 scratch: cavity boundary edge (twin, org, dest, record)
+    bval: np.ndarray  # (T, 2) float64 scratch: area bound and attribute it passes on
+    vslot: np.ndarray  # (V,) int64 scratch: new triangle starting at a vertex, -1
+    trace: np.ndarray  # (N, 5) int64 rows: kind, created, deleted, walk steps, queue length (N = 0: off)
+
+
+# ------------------------------------------------------------------ queues
+
+
+@kernel
+def _heap_less(r, i, j):
+    if r.hkey[i] != r.hkey[j]:
+        return r.hkey[i] < r.hkey[j]
+    return r.hseq[i] < r.hseq[j]
+
+
+@kernel
+def _heap_swap(r, i, j):
+    r.hkey[i], r.hkey[j] = r.hkey[j], r.hkey[i]
+    r.hseq[i], r.hseq[j] = r.hseq[j], r.hseq[i]
+    r.htri[i], r.htri[j] = r.htri[j], r.htri[i]
+    r.hstamp[i], r.hstamp[j] = r.hstamp[j], r.hstamp[i]
+
+
+@kernel
+def heap_push(r, key, t, stamp):
+    """Queue triangle ``t`` (the caller made sure there is room)."""
+    i = r.ipar[I_HSIZE]
+    r.ipar[I_HSIZE] = i + 1
+    r.hkey[i] = key
+    r.hseq[i] = r.ipar[I_SEQ]
+    r.ipar[I_SEQ] += 1
+    r.htri[i] = t
+    r.hstamp[i] = stamp
+    while i > 0:
+        up = (i - 1) // 2
+        if not _heap_less(r, i, up):
+            break
+        _heap_swap(r, i, up)
+        i = up
+
+
+@kernel
+def heap_pop(r):
+    """Move the first entry to the slot just past the heap and return that slot."""
+    n = r.ipar[I_HSIZE] - 1
+    r.ipar[I_HSIZE] = n
+    _heap_swap(r, 0, n)
+    i = 0
+    while True:
+        c = 2 * i + 1
+        if c >= n:
+            break
+        if c + 1 < n and _heap_less(r, c + 1, c):
+            c += 1
+        if not _heap_less(r, c, i):
+            break
+        _heap_swap(r, i, c)
+        i = c
+    return n
+
+
+@kernel
+def _enc_len(r):
+    return r.ipar[I_ETAIL] - r.ipar[I_EHEAD]
+
+
+@kernel
+def _enc_push(r, u, v):
+    cap = r.enc.shape[0]
+    i = r.ipar[I_ETAIL] % cap
+    r.enc[i, 0] = u
+    r.enc[i, 1] = v
+    r.ipar[I_ETAIL] += 1
+
+
+# ------------------------------------------------------------- encroachment
+
+
+@kernel
+def _encroaches(r, xy, e0, e1, a):
+    """Does vertex ``a`` lie in the diametral lens (or circle) of ``e0 e1``?"""
+    ax, ay = xy[a, 0], xy[a, 1]
+    ux, uy = xy[e0, 0] - ax, xy[e0, 1] - ay
+    vx, vy = xy[e1, 0] - ax, xy[e1, 1] - ay
+    dot = ux * vx + uy * vy
+    if dot >= 0.0:
+        return False
+    if r.ipar[I_D]:
+        return True
+    return dot * dot >= r.par[P_LENS] * (ux * ux + uy * uy) * (vx * vx + vy * vy)
+
+
+@kernel
+def _may_split(r, m, e):
+    """-Y keeps boundary subsegments whole, -YY every subsegment."""
+    y = r.ipar[I_Y]
+    return y == 0 or (y == 1 and m.twin[e] != NO_EDGE)
+
+
+@kernel
+def check_subsegment(r, m, e):
+    """Queue subsegment edge ``e`` if an apex on either side encroaches it."""
+    o = m.corner[lnext(e)]
+    d = m.corner[lprev(e)]
+    hit = _encroaches(r, m.xy, o, d, m.corner[e])
+    tw = m.twin[e]
+    if not hit and tw != NO_EDGE:
+        hit = _encroaches(r, m.xy, o, d, m.corner[tw])
+    if hit and _may_split(r, m, e):
+        _enc_push(r, o, d)
+    return hit
+
+
+# ------------------------------------------------------------- bad triangles
+
+
+@kernel
+def _shape(xy, a, b, c):
+    """Squared shortest edge, cos^2 of the smallest angle, twice the area, and
+    the shortest edge's end vertices."""
+    la = (xy[b, 0] - xy[c, 0]) ** 2 + (xy[b, 1] - xy[c, 1]) ** 2  # opposite a
+    lb = (xy[c, 0] - xy[a, 0]) ** 2 + (xy[c, 1] - xy[a, 1]) ** 2
+    lc = (xy[a, 0] - xy[b, 0]) ** 2 + (xy[a, 1] - xy[b, 1]) ** 2
+    if lc < la and lc < lb:  # shortest a-b, smallest angle at c
+        q, u, v, mn, l1, l2 = c, a, b, lc, la, lb
+    elif la < lb:
+        q, u, v, mn, l1, l2 = a, b, c, la, lb, lc
+    else:
+        q, u, v, mn, l1, l2 = b, c, a, lb, lc, la
+    dot = (xy[u, 0] - xy[q, 0]) * (xy[v, 0] - xy[q, 0]) + (xy[u, 1] - xy[q, 1]) * (xy[v, 1] - xy[q, 1])
+    cos2 = dot * dot / (l1 * l2)
+    if dot < 0.0:  # an obtuse smallest angle cannot happen; keep the sign meaningful
+        cos2 = -cos2
+    area2 = (xy[b, 0] - xy[a, 0]) * (xy[c, 1] - xy[a, 1]) - (xy[b, 1] - xy[a, 1]) * (xy[c, 0] - xy[a, 0])
+    return mn, cos2, area2, u, v
+
+
+@kernel
+def _segment_of(m, segs, vtri, v, state, work):
+    """The record of some subsegment at vertex ``v`` (-1 if none)."""
+    e0 = _edge_from(m, vtri, v)
+    if e0 < 0:
+        return -1
+    e = e0
+    for _ in range(m.stamp.shape[0]):  # counter-clockwise, then clockwise
+        if m.seg[e] != NO_SEG:
+            return m.seg[e]
+        if m.seg[lprev(e)] != NO_SEG:
+            return m.seg[lprev(e)]
+        nxt = m.twin[lprev(e)]
+        if nxt == NO_EDGE or nxt == e0:
+            break
+        e = nxt
+    e = e0
+    for _ in range(m.stamp.shape[0]):
+        tw = m.twin[e]
+        if tw == NO_EDGE:
+            break
+        e = lnext(tw)
+        if e == e0:
+            break
+        if m.seg[e] != NO_SEG:
+            return m.seg[e]
+    return -1
+
+
+@kernel
+def _edge_from(m, vtri, v):
+    e = vtri[v]
+    if e >= 0 and m.stamp[e // 3] > 0 and m.corner[lnext(e)] == v:
+        return e
+    return -1
+
+
+@kernel
+def _small_input_angle(m, segs, r, vtri, u, v, state, work):
+    """Miller, Pav and Walkington's exemption: the shortest edge ``u v`` joins
+    two segment vertices on segments that meet at a vertex J, at nearly the
+    same distance from J (the same concentric shell)."""
+    if r.vtype[u] != V_SEGMENT or r.vtype[v] != V_SEGMENT:
+        return False
+    s1 = _segment_of(m, segs, vtri, u, state, work)
+    s2 = _segment_of(m, segs, vtri, v, state, work)
+    if s1 < 0 or s2 < 0:
+        return False
+    xy = m.xy
+    a1, b1 = segs.ends[s1, 0], segs.ends[s1, 1]
+    a2, b2 = segs.ends[s2, 0], segs.ends[s2, 1]
+    j = -1
+    if xy[b1, 0] == xy[a2, 0] and xy[b1, 1] == xy[a2, 1]:
+        j = b1
+    elif xy[a1, 0] == xy[b2, 0] and xy[a1, 1] == xy[b2, 1]:
+        j = a1
+    if j < 0:
+        return False
+    d1 = (xy[u, 0] - xy[j, 0]) ** 2 + (xy[u, 1] - xy[j, 1]) ** 2
+    d2 = (xy[v, 0] - xy[j, 0]) ** 2 + (xy[v, 1] - xy[j, 1]) ** 2
+    return 0.999 * d2 < d1 < 1.001 * d2
+
+
+@kernel
+def test_triangle(r, m, segs, vtri, work, t, state):
+    """Queue triangle ``t`` if it is too big or too skinny (Triangle's
+    ``testtriangle``); the caller made sure the heap has room."""
+    xy = m.xy
+    a, b, c = m.corner[3 * t], m.corner[3 * t + 1], m.corner[3 * t + 2]
+    mn, cos2, area2, u, v = _shape(xy, a, b, c)
+    bad = False
+    if r.ipar[I_FIXAREA] and 0.5 * area2 > r.par[P_MAXAREA]:
+        bad = True
+    if not bad and r.ipar[I_VARAREA] and r.area[t] > 0.0 and 0.5 * area2 > r.area[t]:
+        bad = True
+    if not bad and r.ipar[I_ANGLE] and cos2 > r.par[P_GOODANGLE]:
+        # the shortest edge is not a subsegment and its ends lie on segments
+        # meeting at a small angle: leave it alone
+        k = 0
+        for kk in range(3):
+            if m.corner[3 * t + kk] != u and m.corner[3 * t + kk] != v:
+                k = kk
+        exempt = m.seg[3 * t + k] == NO_SEG and _small_input_angle(m, segs, r, vtri, u, v, state, work)
+        bad = not exempt
+    if bad:
+        strategy = r.ipar[I_STRATEGY]
+        circ2 = 0.0
+        created = 0
+        if strategy != 0:
+            la = (xy[b, 0] - xy[c, 0]) ** 2 + (xy[b, 1] - xy[c, 1]) ** 2
+            lb = (xy[c, 0] - xy[a, 0]) ** 2 + (xy[c, 1] - xy[a, 1]) ** 2
+            lc = (xy[a, 0] - xy[b, 0]) ** 2 + (xy[a, 1] - xy[b, 1]) ** 2
+            circ2 = la * lb * lc / (4.0 * area2 * area2) if area2 != 0.0 else np.inf
+        if strategy == ADVERSARY:
+            created = _would_create(r, m, work, t)
+        next_random(state)
+        rnd = float(state[0])
+        key = priority(strategy, mn, cos2, circ2, created, r.ipar[I_SEQ], rnd)
+        heap_push(r, key, t, m.stamp[t])
+
+
+# ---------------------------------------------------------- new vertices
+
+
+@kernel
+def steiner_point(r, m, t):
+    """Triangle ``t``'s off-center (when closer) or circumcenter, and the
+    barycentric parameters (xi, eta) of it relative to corners 0, 1, 2."""
+    xy = m.xy
+    o, d, a = m.corner[3 * t], m.corner[3 * t + 1], m.corner[3 * t + 2]
+    ox, oy = xy[o, 0], xy[o, 1]
+    xdo, ydo = xy[d, 0] - ox, xy[d, 1] - oy
+    xao, yao = xy[a, 0] - ox, xy[a, 1] - oy
+    dodist = xdo * xdo + ydo * ydo
+    aodist = xao * xao + yao * yao
+    dadist = (xy[d, 0] - xy[a, 0]) ** 2 + (xy[d, 1] - xy[a, 1]) ** 2
+    denom = 0.5 / orient2d(xy[d, 0], xy[d, 1], xy[a, 0], xy[a, 1], ox, oy)
+    dx = (yao * dodist - ydo * aodist) * denom
+    dy = (xdo * aodist - xao * dodist) * denom
+    off = False
+    c = r.par[P_OFFCONSTANT]
+    if r.ipar[I_OFFCENTER] and c > 0.0:
+        if dodist < aodist and dodist < dadist:
+            fx, fy = 0.5 * xdo - c * ydo, 0.5 * ydo + c * xdo
+            if fx * fx + fy * fy < dx * dx + dy * dy:
+                dx, dy, off = fx, fy, True
+        elif aodist < dadist:
+            fx, fy = 0.5 * xao + c * yao, 0.5 * yao - c * xao
+            if fx * fx + fy * fy < dx * dx + dy * dy:
+                dx, dy, off = fx, fy, True
+        else:
+            ex, ey = xy[a, 0] - xy[d, 0], xy[a, 1] - xy[d, 1]
+            fx, fy = 0.5 * ex - c * ey, 0.5 * ey + c * ex
+            if fx * fx + fy * fy < (dx - xdo) ** 2 + (dy - ydo) ** 2:
+                dx, dy, off = xdo + fx, ydo + fy, True
+    xi = (yao * dx - xao * dy) * (2.0 * denom)
+    eta = (xdo * dy - ydo * dx) * (2.0 * denom)
+    return ox + dx, oy + dy, xi, eta, off
+
+
+# ---------------------------------------------------------------- cavities
+
+
+@kernel
+def _cavity(r, m, work, px, py, t0, t1, skip):
+    """Collect the cavity of point (px, py) from triangles ``t0`` (and ``t1``
+    if >= 0), not crossing subsegments or edge ``skip`` (and its twin).
+
+    Returns ``(ntri, nbnd)``: ``r.cav[:ntri]`` the triangles, ``r.bnd[:nbnd]``
+    the boundary edges as (outer twin, org, dest, record), each with the
+    area bound and attribute of its inner triangle in ``r.bval``.  Leaves
+    ``r.seen`` set on the triangles in ``r.cav[:ntest]``; call ``_unsee``.
+    """
+    xy = m.xy
+    cav = r.cav
+    n = 1
+    cav[0] = t0
+    r.seen[t0] = 1
+    if t1 >= 0:
+        cav[1] = t1
+        r.seen[t1] = 1
+        n = 2
+    tested = cav.shape[0]  # triangles tested outside go at the end of cav
+    nb = 0
+    i = 0
+    skip_twin = m.twin[skip] if skip >= 0 else -2
+    while i < n:
+        t = cav[i]
+        i += 1
+        for k in range(3):
+            e = 3 * t + k
+            if e == skip or e == skip_twin:
+                continue
+            tw = m.twin[e]
+            outside = tw == NO_EDGE or m.seg[e] != NO_SEG
+            if not outside:
+                u = tw // 3
+                if r.seen[u] == 1:
+                    continue
+                if r.seen[u] == 0:
+                    a, b, c = m.corner[3 * u], m.corner[3 * u + 1], m.corner[3 * u + 2]
+                    work[C_INCIRCLE] += 1
+                    if incircle(xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[c, 0], xy[c, 1], px, py) > 0.0:
+                        r.seen[u] = 1
+                        cav[n] = u
+                        n += 1
+                        continue
+                    r.seen[u] = 2
+                    tested -= 1
+                    cav[tested] = u
+                outside = True
+            r.bnd[nb, 0] = tw
+            r.bnd[nb, 1] = m.corner[lnext(e)]
+            r.bnd[nb, 2] = m.corner[lprev(e)]
+            r.bnd[nb, 3] = m.seg[e]
+            r.bval[nb, 0] = r.area[t]
+            r.bval[nb, 1] = r.attr[t]
+            nb += 1
+    for j in range(tested, cav.shape[0]):
+        r.seen[cav[j]] = 0
+    return n, nb
+
+
+@kernel
+def _unsee(r, n):
+    for i in range(n):
+        r.seen[r.cav[i]] = 0
+
+
+@kernel
+def _would_create(r, m, work, t):
+    """Triangles a split of ``t`` would create (the adversary's greed)."""
+    px, py, _, _, _ = steiner_point(r, m, t)
+    if not (px == px and py == py):
+        return 0
+    n, nb = _cavity(r, m, work, px, py, t, -1, -1)
+    _unsee(r, n)
+    return nb
+
+
+@kernel
+def _fill_cavity(r, m, work, vtri, p, n, nb):
+    """Replace the cavity by the fan of triangles from ``p`` to its boundary
+    (listed in ``r.fan[:nb]``)."""
+    for i in range(n):
+        t = r.cav[i]
+        r.seen[t] = 0
+        kill_triangle(m, t)
+    work[C_DELETED] += n
+    for j in range(nb):
+        u = r.bnd[j, 1]
+        v = r.bnd[j, 2]
+        t = new_triangle(m, p, u, v)
+        work[C_CREATED] += 1
+        bond(m, 3 * t, r.bnd[j, 0])
+        m.seg[3 * t] = r.bnd[j, 3]
+        m.twin[3 * t + 1] = NO_EDGE
+        m.twin[3 * t + 2] = NO_EDGE
+        m.seg[3 * t + 1] = NO_SEG
+        m.seg[3 * t + 2] = NO_SEG
+        r.area[t] = r.bval[j, 0]
+        r.attr[t] = r.bval[j, 1]
+        r.vslot[u] = t
+        r.fan[j] = t
+        _remember(m, vtri, t)
+    for j in range(nb):  # link the fan: edge v -> p of (p, u, v) to p -> v of the next
+        u = r.bnd[j, 1]
+        v = r.bnd[j, 2]
+        t = r.vslot[u]
+        nxt = r.vslot[v]
+        if nxt >= 0:
+            bond(m, 3 * t + 1, 3 * nxt + 2)
+    for j in range(nb):
+        r.vslot[r.bnd[j, 1]] = -1
+
+
+@kernel
+def _room(r, m, nb):
+    """Enough room to add a vertex and ``nb`` triangles and queue them?"""
+    return (
+        m.size[S_NVERT] < m.xy.shape[0]
+        and spare_triangles(m) >= nb + 2
+        and r.ipar[I_HSIZE] + nb + 2 <= r.hkey.shape[0]
+        and _enc_len(r) + nb + 4 <= r.enc.shape[0]
+        and (r.trace.shape[0] == 0 or r.ipar[I_NTRACE] + 1 < r.trace.shape[0])
+    )
+
+
+@kernel
+def _trace(r, kind, created, deleted, steps, queue):
+    i = r.ipar[I_NTRACE]
+    if r.trace.shape[0] > 0:
+        r.trace[i, 0] = kind
+        r.trace[i, 1] = created
+        r.trace[i, 2] = deleted
+        r.trace[i, 3] = steps
+        r.trace[i, 4] = queue
+        r.ipar[I_NTRACE] = i + 1
+
+
+@kernel
+def _new_vertex(m, r, vmark, parent, px, py, kind, marker, p0, p1, p2, s, t):
+    v = m.size[S_NVERT]
+    m.size[S_NVERT] = v + 1
+    m.xy[v, 0] = px
+    m.xy[v, 1] = py
+    r.vtype[v] = kind
+    vmark[v] = marker
+    parent[v, 0] = p0
+    parent[v, 1] = p1
+    parent[v, 2] = p2
+    parent[v, 3] = s
+    parent[v, 4] = t
+    return v
+
+
+@kernel
+def _test_fan(r, m, segs, vtri, work, nb, triflaws, state):
+    """Quality-test the new triangles ``r.fan[:nb]`` (if ``triflaws``) and
+    queue the encroached subsegments on the fan's rim."""
+    for j in range(nb):
+        t = r.fan[j]
+        if triflaws:
+            test_triangle(r, m, segs, vtri, work, t, state)
+        if m.seg[3 * t] != NO_SEG:
+            check_subsegment(r, m, 3 * t)
+
+
+# ------------------------------------------------------------ splitting
+
+
+@kernel
+def _mark(m, e, rec):
+    m.seg[e] = rec
+    if m.twin[e] != NO_EDGE:
+        m.seg[m.twin[e]] = rec
+
+
+@kernel
+def split_subsegment(r, m, segs, vmark, parent, vtri, work, e, triflaws, state):
+    """Split subsegment edge ``e`` at its midpoint or on a power-of-two shell
+    around an end shared with another segment.  Returns DONE, NEED_ROOM
+    (nothing changed) or PRECISION."""
+    xy = m.xy
+    o = m.corner[lnext(e)]
+    d = m.corner[lprev(e)]
+    tw = m.twin[e]
+    acute_org = m.seg[lprev(e)] != NO_SEG
+    acute_dest = m.seg[lnext(e)] != NO_SEG
+    if tw != NO_EDGE:
+        acute_org = acute_org or m.seg[lnext(tw)] != NO_SEG
+        acute_dest = acute_dest or m.seg[lprev(tw)] != NO_SEG
+    ex, ey = xy[d, 0] - xy[o, 0], xy[d, 1] - xy[o, 1]
+    split = 0.5
+    if acute_org or acute_dest:
+        length = np.sqrt(ex * ex + ey * ey)
+        p2 = 1.0
+        while length > 3.0 * p2:
+            p2 *= 2.0
+        while length < 1.5 * p2:
+            p2 *= 0.5
+        split = p2 / length
+        if acute_dest:
+            split = 1.0 - split
+    px = xy[o, 0] + split * ex
+    py = xy[o, 1] + split * ey
+    # one correction toward the segment's line
+    den = ex * ex + ey * ey
+    mult = orient2d(xy[o, 0], xy[o, 1], xy[d, 0], xy[d, 1], px, py) / den
+    if mult != 0.0 and den != 0.0 and mult == mult:
+        px += mult * ey
+        py += mult * -ex
+    if (px == xy[o, 0] and py == xy[o, 1]) or (px == xy[d, 0] and py == xy[d, 1]):
+        r.ipar[I_ERRV] = o
+        r.ipar[I_ERRW] = d
+        return PRECISION
+    t1 = tw // 3 if tw != NO_EDGE else -1
+    n, nb = _cavity(r, m, work, px, py, e // 3, t1, e)
+    if not _room(r, m, nb) or segs.size[R_NREC] >= segs.marker.shape[0]:
+        _unsee(r, n)
+        return NEED_ROOM
+    rec = m.seg[e]
+    half = new_record(segs, segs.marker[rec], segs.source[rec], segs.ends[rec, 0], segs.ends[rec, 1])
+    v = _new_vertex(m, r, vmark, parent, px, py, V_SEGMENT, segs.marker[rec], o, d, o, split, 0.0)
+    _fill_cavity(r, m, work, vtri, v, n, nb)
+    for j in range(nb):  # the halves: spokes to o and d (edge 2 of (v, o|d, x), edge 1 of (v, x, o|d))
+        t = r.fan[j]
+        for k in range(1, 3):
+            w = m.corner[3 * t + k]
+            if w == o or w == d:
+                _mark(m, 3 * t + 3 - k, rec if w == o else half)
+    work[C_SEGMENT_SPLIT] += 1
+    work[C_STEINER] += 1
+    if r.ipar[I_BUDGET] > 0:
+        r.ipar[I_BUDGET] -= 1
+    _test_fan(r, m, segs, vtri, work, nb, triflaws, state)
+    # the halves themselves
+    ea = _edge(m, work, vtri, v, o, state)
+    if ea >= 0:
+        check_subsegment(r, m, ea)
+    eb = _edge(m, work, vtri, v, d, state)
+    if eb >= 0:
+        check_subsegment(r, m, eb)
+    _trace(r, T_SEGMENT, nb, n, 0, r.ipar[I_HSIZE])
+    return DONE
+
+
+@kernel
+def split_encroached(r, m, segs, vmark, parent, vtri, work, triflaws, state):
+    """Split queued encroached subsegments until none is left (or the budget
+    is spent).  Returns DONE, NEED_ROOM or PRECISION."""
+    cap = r.enc.shape[0]
+    while _enc_len(r) > 0 and r.ipar[I_BUDGET] != 0:
+        i = r.ipar[I_EHEAD] % cap
+        u = r.enc[i, 0]
+        v = r.enc[i, 1]
+        e = _edge(m, work, vtri, u, v, state)
+        if e < 0 or m.seg[e] == NO_SEG:
+            r.ipar[I_EHEAD] += 1  # split or gone since it was queued
+            continue
+        status = split_subsegment(r, m, segs, vmark, parent, vtri, work, e, triflaws, state)
+        if status != DONE:
+            return status
+        r.ipar[I_EHEAD] += 1
+    return DONE
+
+
+@kernel
+def split_bad_triangle(r, m, segs, vmark, parent, vtri, work, t, state):
+    """Insert triangle ``t``'s off-center or circumcenter unless it is across a
+    subsegment or encroaches one (then the subsegment is queued).  Returns
+    DONE or NEED_ROOM (nothing changed)."""
+    xy = m.xy
+    px, py, xi, eta, off = steiner_point(r, m, t)
+    work[C_CIRCUMCENTER] += 1
+    a, b, c = m.corner[3 * t], m.corner[3 * t + 1], m.corner[3 * t + 2]
+    if not (px == px and py == py) or (px == xy[a, 0] and py == xy[a, 1]) or (px == xy[b, 0] and py == xy[b, 1]) or (
+        px == xy[c, 0] and py == xy[c, 1]
+    ):
+        work[C_DUPLICATE] += 1
+        return DONE
+    steps0 = work[C_WALK]
+    status, e = line_walk(m, work, t, px, py, 4 * m.stamp.shape[0] + 64)
+    steps = work[C_WALK] - steps0
+    if status == LOC_BLOCKED or (status == LOC_ON_EDGE and m.seg[e] != NO_SEG):
+        if m.seg[e] != NO_SEG and _may_split(r, m, e):
+            if _enc_len(r) + 1 > r.enc.shape[0]:
+                return NEED_ROOM
+            _enc_push(r, m.corner[lnext(e)], m.corner[lprev(e)])
+        work[C_REJECTED] += 1
+        _trace(r, T_REJECTED, 0, 0, steps, r.ipar[I_HSIZE])
+        return DONE
+    if status == LOC_ON_VERTEX or (status != LOC_INSIDE and status != LOC_ON_EDGE):
+        work[C_DUPLICATE] += 1
+        return DONE
+    start = e // 3
+    second = -1
+    if status == LOC_ON_EDGE and m.twin[e] != NO_EDGE:
+        second = m.twin[e] // 3
+    n, nb = _cavity(r, m, work, px, py, start, second, -1)
+    if not _room(r, m, nb):
+        _unsee(r, n)
+        return NEED_ROOM
+    # a point inside a subsegment's lens is rejected; the subsegment is split
+    xy = m.xy
+    encroached = 0
+    for j in range(nb):
+        if r.bnd[j, 3] != NO_SEG:
+            u = r.bnd[j, 1]
+            v = r.bnd[j, 2]
+            ux, uy = xy[u, 0] - px, xy[u, 1] - py
+            vx, vy = xy[v, 0] - px, xy[v, 1] - py
+            dot = ux * vx + uy * vy
+            if dot < 0.0 and (r.ipar[I_D] or dot * dot >= r.par[P_LENS] * (ux * ux + uy * uy) * (vx * vx + vy * vy)):
+                encroached += 1
+                if r.ipar[I_Y] == 0 or (r.ipar[I_Y] == 1 and r.bnd[j, 0] != NO_EDGE):
+                    _enc_push(r, u, v)
+    if encroached:
+        _unsee(r, n)
+        work[C_REJECTED] += 1
+        work[C_UNDONE] += nb
+        _trace(r, T_REJECTED, 0, 0, steps, r.ipar[I_HSIZE])
+        return DONE
+    # attributes: barycentric in the triangle's corners 0, 1, 2
+    v = _new_vertex(m, r, vmark, parent, px, py, V_FREE, 0, a, b, c, xi, eta)
+    _fill_cavity(r, m, work, vtri, v, n, nb)
+    work[C_STEINER] += 1
+    if r.ipar[I_BUDGET] > 0:
+        r.ipar[I_BUDGET] -= 1
+    _test_fan(r, m, segs, vtri, work, nb, 1, state)
+    _trace(r, T_OFFCENTER if off else T_CIRCUMCENTER, nb, n, steps, r.ipar[I_HSIZE])
+    return DONE
+
+
+@kernel
+def tally_encroached(r, m):
+    """Queue every encroached subsegment (each edge once); the caller made
+    room for all of them."""
+    for t in range(m.size[S_NSLOT]):
+        if m.stamp[t] <= 0:
+            continue
+        for k in range(3):
+            e = 3 * t + k
+            if m.seg[e] != NO_SEG and (m.twin[e] == NO_EDGE or e < m.twin[e]):
+                check_subsegment(r, m, e)
+
+
+@kernel
+def refine(r, m, segs, vmark, parent, vtri, work, state):
+    """Triangle's refinement loop, resumable: returns DONE, NEED_ROOM (grow the
+    arrays and call again) or PRECISION."""
+    while True:
+        if r.ipar[I_PHASE] == 0:  # encroached subsegments of the input
+            status = split_encroached(r, m, segs, vmark, parent, vtri, work, 0, state)
+            if status != DONE:
+                return status
+            r.ipar[I_PHASE] = 1
+        if r.ipar[I_PHASE] == 1:  # every triangle's quality
+            if r.hkey.shape[0] < m.size[S_NSLOT] + 16:
+                return NEED_ROOM
+            r.ipar[I_HSIZE] = 0
+            for t in range(m.size[S_NSLOT]):
+                if m.stamp[t] > 0:
+                    test_triangle(r, m, segs, vtri, work, t, state)
+            r.ipar[I_PHASE] = 2
+        if r.ipar[I_CURRENT] >= 0:  # the popped triangle (again after a NEED_ROOM)
+            t = r.ipar[I_CURRENT]
+            stamp = r.ipar[I_CURSTAMP]
+            if m.stamp[t] == stamp:
+                status = split_bad_triangle(r, m, segs, vmark, parent, vtri, work, t, state)
+                if status != DONE:
+                    return status
+            r.ipar[I_CURRENT] = -1
+            if _enc_len(r) > 0:  # split the subsegments first, then try again
+                # (room: the pop freed a slot and a split leaves two spare)
+                heap_push(r, r.par[P_CURKEY], t, stamp)
+                status = split_encroached(r, m, segs, vmark, parent, vtri, work, 1, state)
+                if status != DONE:
+                    return status
+        if _enc_len(r) > 0:
+            status = split_encroached(r, m, segs, vmark, parent, vtri, work, 1, state)
+            if status != DONE:
+                return status
+        if r.ipar[I_HSIZE] == 0 or r.ipar[I_BUDGET] == 0:
+            return DONE
+        i = heap_pop(r)
+        t = r.htri[i]
+        work[C_QUEUE_POP] += 1
+        if m.stamp[t] != r.hstamp[i]:
+            work[C_STALE_POP] += 1
+            continue
+        r.par[P_CURKEY] = r.hkey[i]
+        r.ipar[I_CURRENT] = t
+        r.ipar[I_CURSTAMP] = r.hstamp[i]

@@ -1,0 +1,86 @@
+"""Which bad triangle is split next: strategies by name, an integer id each.
+
+Every strategy is one priority key per queued triangle (smaller is served
+first; ties go to the earlier entry), computed by ``priority`` inside the
+refinement kernel, so the hot loop never calls back into Python.  One binary
+heap then serves them all: Triangle's 4096 FIFO buckets are the key "bucket
+number, negated" with FIFO order inside a bucket.
+"""
+
+from __future__ import annotations
+
+import math
+
+from .jit import kernel
+
+TRIANGLE, WORST_ANGLE, FIFO, LIFO, RANDOM, LARGEST, SMALLEST, ADVERSARY = range(8)
+
+_DESCRIPTIONS = {
+    "triangle": (TRIANGLE, "Triangle 1.6's order: 4096 FIFO buckets by squared shortest edge, finest first"),
+    "worst-angle": (WORST_ANGLE, "smallest minimum angle first (CGAL's order)"),
+    "fifo": (FIFO, "first queued, first split"),
+    "lifo": (LIFO, "last queued, first split"),
+    "random": (RANDOM, "uniformly random among the queued triangles (seeded)"),
+    "largest": (LARGEST, "largest circumradius first"),
+    "smallest": (SMALLEST, "smallest circumradius first"),
+    "adversary": (ADVERSARY, "greedy: the split that would create the most triangles, measured when queued"),
+}
+
+
+def strategies() -> dict[str, str]:
+    """Strategy names with one line each, in a stable order."""
+    return {name: text for name, (_, text) in _DESCRIPTIONS.items()}
+
+
+def strategy_id(name: str) -> int:
+    try:
+        return _DESCRIPTIONS[name][0]
+    except KeyError:
+        raise ValueError(f"unknown strategy {name!r}; choose one of {', '.join(_DESCRIPTIONS)}") from None
+
+
+@kernel
+def triangle_bucket(key):
+    """Triangle's bucket (0..4095) for a squared shortest edge ``key``.
+
+    ``L = key`` or ``1 / key``, whichever is at least 1, written ``2^e f`` with
+    ``f`` in (1, 2]; ``x = 2e + [f > sqrt 2]``; bucket ``2047 - x`` for
+    ``key >= 1`` and ``2048 + x`` below.  Higher buckets are served first.
+    """
+    if key <= 0.0 or key != key:
+        return 4095
+    big = key >= 1.0
+    length = key if big else 1.0 / key
+    if length == math.inf:
+        return 0 if big else 4095
+    # frexp: length = mant * 2**ex with mant in [0.5, 1); shift to f in (1, 2]
+    mant, ex = math.frexp(length)
+    f = 2.0 * mant
+    e = ex - 1
+    if f == 1.0 and e > 0:  # exact power of two: f = 2, one exponent lower
+        f = 2.0
+        e -= 1
+    x = 2 * e + (1 if f > math.sqrt(2.0) else 0)
+    if x > 2047:
+        x = 2047
+    return 2047 - x if big else 2048 + x
+
+
+@kernel
+def priority(strategy, min_edge2, cos2_min_angle, circumradius2, created_estimate, seq, rnd):
+    """The heap key of a bad triangle (smaller first); ``seq`` breaks ties."""
+    if strategy == TRIANGLE:
+        return -float(triangle_bucket(min_edge2))
+    if strategy == WORST_ANGLE:
+        return -cos2_min_angle
+    if strategy == FIFO:
+        return 0.0
+    if strategy == LIFO:
+        return -float(seq)
+    if strategy == RANDOM:
+        return rnd
+    if strategy == LARGEST:
+        return -circumradius2
+    if strategy == SMALLEST:
+        return circumradius2
+    return -float(created_estimate)  # ADVERSARY
