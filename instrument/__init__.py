@@ -3,7 +3,9 @@
 ``import instrument as triangle`` gives the `triangle` package's API.
 """
 
+from .compat import convex_hull, delaunay, voronoi
 from .driver import triangulate
 from .output import Result
+from .plot import compare, comparev, plot, work
 
-__all__ = ["triangulate", "Result"]
+__all__ = ["Result", "compare", "comparev", "convex_hull", "delaunay", "plot", "triangulate", "voronoi", "work"]

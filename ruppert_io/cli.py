@@ -707,59 +707,10 @@ def _write_trace(path: str, trace) -> None:
 
 
 def _voronoi(mesh: Mapping[str, Any]) -> dict[str, np.ndarray]:
-    """Triangle's Voronoi diagram of a mesh (reference §2.8), as ``write`` wants it.
+    """Triangle's Voronoi diagram of a mesh, as ``write`` wants it (the engine computes it)."""
+    from instrument.voronoi import diagram
 
-    Voronoi vertex i is the circumcenter of triangle i, computed with Triangle's
-    formula (org, dest, apex = the .ele columns); vertex attributes are
-    interpolated there.  Edges are listed triangle by triangle, edges (c0, c1),
-    (c1, c2), (c2, c0), each once (when the neighbour is absent or comes later);
-    a hull edge org -> dest gives a ray from the circumcenter in the direction
-    (dest.y - org.y, org.x - dest.x).
-    """
-    xy = np.asarray(mesh["vertices"], dtype=np.float64).reshape(-1, 2)
-    t = stats._triangles(mesh)[:, :3]
-    m = len(t)
-    torg, tdest, tapex = xy[t[:, 0]], xy[t[:, 1]], xy[t[:, 2]]
-    with np.errstate(all="ignore"):
-        xdo, ydo = (tdest - torg).T
-        xao, yao = (tapex - torg).T
-        dodist = xdo * xdo + ydo * ydo
-        aodist = xao * xao + yao * yao
-        denominator = 0.5 / (xdo * yao - ydo * xao)
-        dx = (yao * dodist - ydo * aodist) * denominator
-        dy = (xdo * aodist - xao * dodist) * denominator
-        centers = np.column_stack([torg[:, 0] + dx, torg[:, 1] + dy])
-        xi = (yao * dx - xao * dy) * (2.0 * denominator)
-        eta = (xdo * dy - ydo * dx) * (2.0 * denominator)
-    vor: dict[str, np.ndarray] = {"vertices": centers}
-    attr = mesh.get("vertex_attributes")
-    if attr is not None and np.size(attr):
-        a = np.asarray(attr, dtype=np.float64).reshape(len(xy), -1)
-        ao, ad, aa = a[t[:, 0]], a[t[:, 1]], a[t[:, 2]]
-        vor["vertex_attributes"] = ao + xi[:, None] * (ad - ao) + eta[:, None] * (aa - ao)
-    # Directed edges (org, dest) in Triangle's order, and their neighbours.
-    org = t[:, [0, 1, 2]].ravel()
-    dest = t[:, [1, 2, 0]].ravel()
-    owner = np.repeat(np.arange(m), 3)
-    n = len(xy)
-    key = org.astype(np.int64) * n + dest
-    rev = dest.astype(np.int64) * n + org
-    order = np.argsort(key, kind="stable")
-    pos = np.searchsorted(key[order], rev)
-    pos = np.minimum(pos, max(len(key) - 1, 0))
-    found = (key[order][pos] == rev) if len(key) else np.zeros(0, dtype=bool)
-    neighbour = np.where(found, owner[order][pos] if len(key) else owner, -1)
-    keep = (neighbour < 0) | (neighbour > owner)
-    edges = np.column_stack([owner[keep], neighbour[keep]]).astype(np.int64)
-    normals = np.zeros((len(edges), 2))
-    ray = neighbour[keep] < 0
-    o_xy, d_xy = xy[org[keep][ray]], xy[dest[keep][ray]]
-    normals[ray, 0] = d_xy[:, 1] - o_xy[:, 1]
-    normals[ray, 1] = o_xy[:, 0] - d_xy[:, 0]
-    vor["edges"] = edges
-    if ray.any():
-        vor["normals"] = normals
-    return vor
+    return diagram(mesh)
 
 
 if __name__ == "__main__":
