@@ -167,13 +167,15 @@ def _assemble(ms: Mesher, inp: dict, o: Options) -> Result:
         keep[corners.ravel()] = True
         if ms.collinear:  # no triangle ever existed: only duplicates are unused
             keep[: ms.n_input] = ms.dup < 0
-        new_id = np.cumsum(keep) - 1
     else:
         keep = np.ones(nv, dtype=bool)
-        new_id = np.arange(nv)
+    if ms.dead is not None and ms.dead.size:
+        keep[ms.dead] = False
+    renumber = o.j or not keep.all()
+    new_id = np.cumsum(keep) - 1
 
     def ids(a):
-        return (new_id[a] if o.j else a).astype(np.int32, copy=False)
+        return (new_id[a] if renumber else a).astype(np.int32, copy=False)
 
     out = Result()
     if not o.N:

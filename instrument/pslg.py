@@ -34,6 +34,7 @@ class Mesher:
     warnings: list[str] = field(default_factory=list)
     region_attr: np.ndarray | None = None  # per triangle slot, with -A
     region_area: np.ndarray | None = None  # per triangle slot, with a bare -a
+    dead: np.ndarray | None = None  # vertices refinement deleted (not output)
 
     @property
     def collinear(self) -> bool:

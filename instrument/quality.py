@@ -133,6 +133,7 @@ def run(ms: Mesher, o: Options, *, strategy: str = "triangle", steiner: str = "o
     ms.region_area = r.area
     if ms.region_attr is not None:
         ms.region_attr = r.attr
+    ms.dead = np.flatnonzero(r.vtype[: ms.n_vertices] == rf.V_DEAD)
     n = int(r.ipar[rf.I_NTRACE])
     return r.trace[:n].copy() if trace else None
 

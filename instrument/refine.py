@@ -30,6 +30,7 @@ from .counters import (
     C_CIRCUMCENTER,
     C_CREATED,
     C_DELETED,
+    C_DELETED_VERTEX,
     C_DUPLICATE,
     C_INCIRCLE,
     C_QUEUE_POP,
@@ -50,6 +51,7 @@ from .strategies import ADVERSARY, priority
 V_INPUT = 0
 V_SEGMENT = 1
 V_FREE = 2
+V_DEAD = 3  # a deleted free vertex (dropped from the output)
 
 # kernel status
 DONE = 0
@@ -280,6 +282,11 @@ def _edge_from(m, vtri, v):
 
 
 @kernel
+def _same(xy, u, v):
+    return xy[u, 0] == xy[v, 0] and xy[u, 1] == xy[v, 1]
+
+
+@kernel
 def _small_input_angle(m, segs, r, vtri, u, v, state, work):
     """Miller, Pav and Walkington's exemption: the shortest edge ``u v`` joins
     two segment vertices on segments that meet at a vertex J, at nearly the
@@ -293,10 +300,12 @@ def _small_input_angle(m, segs, r, vtri, u, v, state, work):
     xy = m.xy
     a1, b1 = segs.ends[s1, 0], segs.ends[s1, 1]
     a2, b2 = segs.ends[s2, 0], segs.ends[s2, 1]
+    # a shared end, compared by coordinates (in either direction: Triangle
+    # relies on its subsegments' orientation, our records keep the input's)
     j = -1
-    if xy[b1, 0] == xy[a2, 0] and xy[b1, 1] == xy[a2, 1]:
+    if _same(xy, b1, a2) or _same(xy, b1, b2):
         j = b1
-    elif xy[a1, 0] == xy[b2, 0] and xy[a1, 1] == xy[b2, 1]:
+    elif _same(xy, a1, b2) or _same(xy, a1, a2):
         j = a1
     if j < 0:
         return False
@@ -561,6 +570,169 @@ def _mark(m, e, rec):
 
 
 @kernel
+def _fill_polygon(r, m, work, vtri, chain, outer, outer_seg, count, stack):
+    """Triangulate the polygon ``chain[0..count-1]`` whose other vertices lie
+    left of ``chain[0] -> chain[count-1]``: each base edge takes the vertex
+    whose circle through it holds no other candidate (the constrained
+    Delaunay choice), then both sides recurse.  ``outer[i]`` is the outside
+    twin of the polygon edge ``chain[i] chain[i+1]``.  New triangles go on
+    ``r.fan``; returns (base edge of the first, how many)."""
+    xy = m.xy
+    root = -1
+    made = 0
+    stack[0] = 0
+    stack[1] = count - 1
+    stack[2] = -1
+    sp = 1
+    while sp > 0:
+        sp -= 1
+        i = stack[3 * sp]
+        j = stack[3 * sp + 1]
+        pe = stack[3 * sp + 2]
+        if j == i + 1:  # a polygon edge: link to the outside
+            bond(m, pe, outer[i])
+            m.seg[pe] = outer_seg[i]
+            continue
+        ci = chain[i]
+        cj = chain[j]
+        k = i + 1
+        for q in range(i + 2, j):
+            work[C_INCIRCLE] += 1
+            ck = chain[k]
+            cq = chain[q]
+            if incircle(xy[ci, 0], xy[ci, 1], xy[cj, 0], xy[cj, 1], xy[ck, 0], xy[ck, 1], xy[cq, 0], xy[cq, 1]) > 0.0:
+                k = q
+        t = new_triangle(m, chain[k], ci, cj)
+        work[C_CREATED] += 1
+        r.fan[made] = t
+        made += 1
+        _remember(m, vtri, t)
+        if pe < 0:
+            root = 3 * t
+        else:
+            bond(m, 3 * t, pe)
+        stack[3 * sp] = i
+        stack[3 * sp + 1] = k
+        stack[3 * sp + 2] = 3 * t + 2
+        stack[3 * sp + 3] = k
+        stack[3 * sp + 4] = j
+        stack[3 * sp + 5] = 3 * t + 1
+        sp += 2
+    return root, made
+
+
+@kernel
+def delete_free_vertex(r, m, segs, vtri, work, v, state):
+    """Remove free vertex ``v`` (Chew's rule: it sits in a subsegment's
+    diametral circle) and re-triangulate its star.  Returns False (nothing
+    changed) if ``v`` is on the boundary or the scratch space is short."""
+    e0 = _edge_from(m, vtri, v)
+    if e0 < 0:
+        return False
+    # the star, counter-clockwise: w[i] = dest of the i-th edge out of v
+    w = r.cav  # vertices
+    outer = r.bnd[:, 0]  # outside twin of w[i] -> w[i+1]
+    tris = r.bnd[:, 1]
+    rec = r.bnd[:, 3]  # record of w[i] -> w[i+1]
+    area = r.bval[:, 0]
+    attr = r.bval[:, 1]
+    d = 0
+    e = e0
+    for _ in range(m.stamp.shape[0]):
+        if d + 2 >= w.shape[0] // 4:
+            return False
+        t = e // 3
+        w[d] = m.corner[lprev(e)]
+        outer[d] = m.twin[lnext(e)]  # edge dest -> apex, opposite v
+        rec[d] = m.seg[lnext(e)]
+        tris[d] = t
+        area[d] = r.area[t]
+        attr[d] = r.attr[t]
+        d += 1
+        nxt = m.twin[lprev(e)]
+        if nxt == NO_EDGE:
+            return False
+        e = nxt
+        if e == e0:
+            break
+    if d < 3 or spare_triangles(m) < d or r.ipar[I_HSIZE] + d + 2 > r.hkey.shape[0]:
+        return False
+    # the polygon w0 .. w[d-1]; base w0 -> w1, chain w0, w[d-1], ..., w1
+    half = w.shape[0] // 2
+    chain = w[half:]
+    ring = r.fan  # outside twins in chain order (fan is overwritten later)
+    ring_seg = r.vslot  # and records (vslot is all -1 between insertions)
+    chain[0] = w[0]
+    for i in range(1, d):
+        chain[i] = w[d - i]
+    # chain edge (chain[i], chain[i+1]) is the star's edge w[d-1-i] -> w[d-i]
+    for i in range(d - 1):
+        ring[i] = outer[(d - 1 - i) % d]
+        ring_seg[i] = rec[(d - 1 - i) % d]
+    base_outer = outer[0]
+    base_seg = rec[0]
+    for i in range(d):
+        kill_triangle(m, tris[i])
+    work[C_DELETED] += d
+    area0 = area[0]
+    attr0 = attr[0]
+    for i in range(d):  # the outside twins move to w's place: fan is the fill's output
+        w[i] = ring[i] if i < d - 1 else -1
+    # the fill's stack (3 per level, d levels at most) in bnd's free column
+    for i in range(d - 1):  # records too: vslot must be all -1 again after
+        rec[i] = ring_seg[i]
+        ring_seg[i] = -1
+    root, made = _fill_polygon(r, m, work, vtri, chain, w, rec, d, r.bnd[:, 2])
+    bond(m, root, base_outer)
+    m.seg[root] = base_seg
+    for i in range(made):
+        r.area[r.fan[i]] = area0
+        r.attr[r.fan[i]] = attr0
+    r.vtype[v] = V_DEAD
+    work[C_DELETED_VERTEX] += 1
+    _trace(r, T_DELETED, made, d, 0, r.ipar[I_HSIZE])
+    if r.ipar[I_Y] == 0:
+        for i in range(made):
+            test_triangle(r, m, segs, vtri, work, r.fan[i], state)
+    return True
+
+
+@kernel
+def _chew_delete(r, m, segs, vtri, work, e, state):
+    """Before splitting subsegment ``e``: delete free vertices inside its
+    diametral circle on a side where no other segment meets it.  Returns
+    False if there was no room (nothing changed on that side)."""
+    for side in range(2):
+        f = e if side == 0 else m.twin[e]
+        if f == NO_EDGE:
+            continue
+        if m.seg[lnext(f)] != NO_SEG or m.seg[lprev(f)] != NO_SEG:
+            continue
+        for _ in range(m.stamp.shape[0]):
+            o = m.corner[lnext(f)]
+            d = m.corner[lprev(f)]
+            a = m.corner[f]
+            if r.vtype[a] != V_FREE:
+                break
+            xy = m.xy
+            dot = (xy[o, 0] - xy[a, 0]) * (xy[d, 0] - xy[a, 0]) + (xy[o, 1] - xy[a, 1]) * (xy[d, 1] - xy[a, 1])
+            if dot >= 0.0:
+                break
+            if r.ipar[I_HSIZE] + 64 > r.hkey.shape[0]:
+                return False
+            if not delete_free_vertex(r, m, segs, vtri, work, a, state):
+                break
+            f = _edge(m, work, vtri, o, d, state)
+            if f < 0:
+                return True
+            if side == 1:
+                f = m.twin[f]
+                if f == NO_EDGE:
+                    break
+    return True
+
+
+@kernel
 def split_subsegment(r, m, segs, vmark, parent, vtri, work, e, triflaws, state):
     """Split subsegment edge ``e`` at its midpoint or on a power-of-two shell
     around an end shared with another segment.  Returns DONE, NEED_ROOM
@@ -642,6 +814,13 @@ def split_encroached(r, m, segs, vmark, parent, vtri, work, triflaws, state):
         if e < 0 or m.seg[e] == NO_SEG:
             r.ipar[I_EHEAD] += 1  # split or gone since it was queued
             continue
+        if not r.ipar[I_D]:
+            if not _chew_delete(r, m, segs, vtri, work, e, state):
+                return NEED_ROOM
+            e = _edge(m, work, vtri, u, v, state)
+            if e < 0:
+                r.ipar[I_EHEAD] += 1
+                continue
         status = split_subsegment(r, m, segs, vmark, parent, vtri, work, e, triflaws, state)
         if status != DONE:
             return status
