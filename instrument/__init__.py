@@ -7,5 +7,6 @@ from .compat import convex_hull, delaunay, voronoi
 from .driver import triangulate
 from .output import Result
 from .plot import compare, comparev, plot, work
+from .strategies import strategies
 
-__all__ = ["Result", "compare", "comparev", "convex_hull", "delaunay", "plot", "triangulate", "voronoi", "work"]
+__all__ = ["Result", "compare", "comparev", "convex_hull", "delaunay", "plot", "strategies", "triangulate", "voronoi", "work"]

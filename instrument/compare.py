@@ -16,8 +16,9 @@
 It returns one ``Row`` per engine (and strategy).  An engine that cannot run
 the switches (our engine raises ``NotImplementedError`` for switches it does
 not implement yet; CGAL has no ``r``) gets status ``"unsupported"``, one that
-fails gets ``"error"``, one that is not installed ``"unavailable"``; the
-comparison goes on either way.
+fails gets ``"error"``, one that is not installed ``"unavailable"``, and
+with a ``timeout`` our engine runs in a forked child that is killed when it
+takes longer (``"timeout"``); the comparison goes on either way.
 
 Counts are made comparable: Triangle's printed orientation count includes one
 ``orient2d`` call per output triangle made by the ``V`` quality statistics
@@ -84,7 +85,7 @@ class Row:
     switches: str
     engine: str  # "ours", "triangle" or "cgal"
     strategy: str = ""  # ours only
-    status: str = "ok"  # ok | unsupported | error | unavailable
+    status: str = "ok"  # ok | unsupported | error | timeout | unavailable
     vertices: int | None = None
     triangles: int | None = None
     min_angle: float | None = None  # degrees
@@ -206,6 +207,59 @@ def run_ours(tri: dict, opts: str, strategy: str = "triangle", *, seed: int = 0,
     return out, best
 
 
+class EngineTimeout(RuntimeError):
+    """Our engine did not finish within the time limit (it was killed)."""
+
+
+def _ours_child(conn, tri, opts, strategy, seed, repeat):
+    try:
+        out, wall = run_ours(tri, opts, strategy, seed=seed, repeat=repeat)
+        conn.send(("ok", dict(out), dict(getattr(out, "work", {}) or {}), wall))
+    except NotImplementedError as exc:
+        conn.send(("unsupported", _error(exc)))
+    except BaseException as exc:  # noqa: BLE001  (reported to the parent)
+        conn.send(("error", _error(exc)))
+    finally:
+        conn.close()
+
+
+def run_ours_isolated(tri: dict, opts: str, strategy: str = "triangle", *, seed: int = 0, repeat: int = 3,
+                      timeout: float = 60.0):
+    """``run_ours`` in a forked child that is killed after ``timeout`` seconds
+    (numba code cannot be interrupted in-process): (result dict, work, best wall
+    time).  Raises ``EngineTimeout``, ``NotImplementedError`` or ``RuntimeError``.
+    Without ``fork`` (Windows) it runs in this process, with no limit."""
+    import multiprocessing
+
+    try:
+        ctx = multiprocessing.get_context("fork")
+    except ValueError:  # pragma: no cover - no fork on this platform
+        out, wall = run_ours(tri, opts, strategy, seed=seed, repeat=repeat)
+        return dict(out), dict(getattr(out, "work", {}) or {}), wall
+    _warm_up(opts, strategy)  # here, so that every child inherits the compiled kernels
+    recv, send = ctx.Pipe(duplex=False)
+    child = ctx.Process(target=_ours_child, args=(send, tri, opts, strategy, seed, repeat), daemon=True)
+    child.start()
+    send.close()
+    try:
+        if not recv.poll(timeout):
+            child.kill()
+            raise EngineTimeout(f"no result within {timeout:g} s (killed)")
+        try:
+            msg = recv.recv()
+        except EOFError:
+            child.join()
+            raise RuntimeError(f"the engine's process died (exit code {child.exitcode})") from None
+    finally:
+        recv.close()
+        child.join()
+    if msg[0] == "unsupported":
+        raise NotImplementedError(msg[1])
+    if msg[0] == "error":
+        raise RuntimeError(msg[1])
+    return msg[1], msg[2], msg[3]
+
+
 # ---------------------------------------------------------------------------------------------
 # Triangle (the `triangle` package)
 
@@ -315,7 +369,7 @@ def triangle_statistics(tri: dict, opts: str) -> tuple[dict, dict[str, int], str
     c_in, _ = _triangle_input(tri)
     sw = re.sub(r"[QV]", "", triangle_switches(opts))
     with capture_c_stdout() as text:
-        out, _ = triang(c_in, "z{%s}V" % sw)
+        out, _ = triang(c_in, f"z{{{sw}}}V")
     raw = text[0] if text else ""
     return {translate_frw[k]: v for k, v in out.items()}, parse_triangle_statistics(raw), raw
 
@@ -473,6 +527,7 @@ def compare(
     repeat: int = 3,
     seed: int = 0,
     keep_meshes: bool = False,
+    timeout: float | None = None,
 ) -> list[Row]:
     """Run ``tri`` under the switch string ``opts`` through the chosen engines.
 
@@ -481,7 +536,9 @@ def compare(
     ``D``, ``r``), and only ``"triangle"`` otherwise (the strategy only orders
     refinement, so the runs would be identical).  ``repeat``: timed runs per
     engine (the best counts).  ``keep_meshes``: store each output's vertices,
-    triangles and segments in ``Row.mesh`` (for plots).
+    triangles and segments in ``Row.mesh`` (for plots).  ``timeout``: run each
+    of our engine's runs in a forked child killed after that many seconds
+    (status ``"timeout"``); ``None`` runs them in this process.
     """
     engines = tuple(engines)
     unknown = set(engines) - set(ENGINES)
@@ -515,7 +572,7 @@ def compare(
                 dropped = _triangle_input(tri)[1]
                 if dropped:
                     tri_row.note = (tri_row.note + "; " if tri_row.note else "") + f"keys dropped: {dropped}"
-            except Exception as exc:  # Triangle's RuntimeError, KeyError for odd keys, ...
+            except Exception as exc:  # noqa: BLE001  (Triangle's RuntimeError, KeyError, ...: a row, not a crash)
                 tri_row.status, tri_row.note = "error", _error(exc)
         rows.append(tri_row)
 
@@ -523,14 +580,21 @@ def compare(
         for strategy in strategies:
             row = Row(name, opts, "ours", strategy=strategy)
             try:
-                out, row.wall_s = run_ours(tri, opts, strategy, seed=seed, repeat=repeat)
+                if timeout is None:
+                    out, row.wall_s = run_ours(tri, opts, strategy, seed=seed, repeat=repeat)
+                    work = dict(getattr(out, "work", {}) or {})
+                else:
+                    out, work, row.wall_s = run_ours_isolated(
+                        tri, opts, strategy, seed=seed, repeat=repeat, timeout=timeout
+                    )
             except NotImplementedError as exc:
                 row.status, row.note = "unsupported", _error(exc)
-            except Exception as exc:
+            except EngineTimeout as exc:
+                row.status, row.note = "timeout", str(exc)
+            except Exception as exc:  # noqa: BLE001  (any failure is reported in the row)
                 row.status, row.note = "error", _error(exc)
             else:
                 _fill_mesh(row, out, keep_meshes)
-                work = dict(getattr(out, "work", {}) or {})
                 row.work = work
                 row.incircle_tests = work.get("incircle_tests")
                 row.orient_tests = work.get("orient_tests")
@@ -549,7 +613,7 @@ def compare(
                 mesh, row.wall_s, notes = run_cgal(tri, opts, repeat=repeat)
             except NotImplementedError as exc:
                 row.status, row.note = "unsupported", _error(exc)
-            except Exception as exc:
+            except Exception as exc:  # noqa: BLE001  (any failure is reported in the row)
                 row.status, row.note = "error", _error(exc)
             else:
                 _fill_mesh(row, mesh, keep_meshes)
@@ -568,14 +632,14 @@ def flag_rows(rows: list[Row], opts: str) -> None:
     """Set ``flags`` on our engine's rows: ``size`` (vertices or triangles differ
     from Triangle's by more than 2 %), ``area`` (meshed area differs), ``angle``
     (a ``q`` bound is not met, unless Triangle's own smallest angle misses it
-    too, as happens next to small input angles), ``error``."""
+    too, as happens next to small input angles), ``error``, ``timeout``."""
     o = parse(opts)
     ref = next((r for r in rows if r.engine == "triangle" and r.status == "ok"), None)
     for row in rows:
         if row.engine != "ours":
             continue
-        if row.status == "error":
-            row.flags.append("error")
+        if row.status in ("error", "timeout"):
+            row.flags.append(row.status)
         if row.status != "ok":
             continue
         if ref is not None:

@@ -56,11 +56,11 @@ def _new_refiner(ms: Mesher, o: Options, strategy: str, steiner: str, trace: boo
         hseq=np.zeros(slots + 16, dtype=np.int64),
         htri=np.zeros(slots + 16, dtype=np.int64),
         hstamp=np.zeros(slots + 16, dtype=np.int64),
-        enc=np.zeros((3 * slots + 16, 2), dtype=np.int32),
+        enc=np.zeros((3 * slots + 16, 4), dtype=np.int64),
         cav=np.zeros(slots, dtype=np.int64),
         fan=np.zeros(slots, dtype=np.int64),
         seen=np.zeros(slots, dtype=np.int8),
-        bnd=np.zeros((slots, 4), dtype=np.int64),
+        bnd=np.zeros((slots, 5), dtype=np.int64),
         bval=np.zeros((slots, 2)),
         vslot=np.full(nvcap, -1, dtype=np.int64),
         trace=np.zeros((1024 if trace else 0, 5), dtype=np.int64),
@@ -78,12 +78,12 @@ def _grow(ms: Mesher, r: rf.Refiner) -> rf.Refiner:
     if enc.shape[0] < 3 * slots + 16:  # unroll the ring
         head, tail = int(r.ipar[rf.I_EHEAD]), int(r.ipar[rf.I_ETAIL])
         live = enc[np.arange(head, tail) % enc.shape[0]]
-        enc = np.zeros((2 * (3 * slots + 16), 2), dtype=np.int32)
+        enc = np.zeros((2 * (3 * slots + 16), 4), dtype=np.int64)
         enc[: live.shape[0]] = live
         r.ipar[rf.I_EHEAD] = 0
         r.ipar[rf.I_ETAIL] = live.shape[0]
     trace = r.trace
-    if trace.shape[0] and r.ipar[rf.I_NTRACE] + 2 >= trace.shape[0]:
+    if trace.shape[0] and r.ipar[rf.I_NTRACE] + 64 > trace.shape[0]:
         trace = _widen(trace, 2 * trace.shape[0], 0)
     return r._replace(
         vtype=_widen(r.vtype, nvcap, 0),
@@ -109,7 +109,7 @@ def run(ms: Mesher, o: Options, *, strategy: str = "triangle", steiner: str = "o
     if steiner not in STEINER:
         raise ValueError(f"steiner must be one of {', '.join(STEINER)}, not {steiner!r}")
     if o.S == 0:
-        return np.zeros((0, 5), dtype=np.int64) if trace else None
+        return np.zeros(0, dtype=TRACE_DTYPE) if trace else None
     r = _new_refiner(ms, o, strategy, steiner, trace)
     nin = ms.n_vertices
     r.vtype[:nin] = rf.V_INPUT
@@ -134,10 +134,21 @@ def run(ms: Mesher, o: Options, *, strategy: str = "triangle", steiner: str = "o
     if ms.region_attr is not None:
         ms.region_attr = r.attr
     ms.dead = np.flatnonzero(r.vtype[: ms.n_vertices] == rf.V_DEAD)
-    n = int(r.ipar[rf.I_NTRACE])
-    return r.trace[:n].copy() if trace else None
+    return _trace_table(r.trace[: int(r.ipar[rf.I_NTRACE])]) if trace else None
 
 
-def trace_kind(code: int) -> str:
-    return _TRACE_KINDS[code]
+TRACE_DTYPE = np.dtype(
+    [("kind", "U12"), ("created", "i8"), ("deleted", "i8"), ("walk_steps", "i8"), ("queue_length", "i8")]
+)
+
+
+def _trace_table(rows: np.ndarray) -> np.ndarray:
+    """One record per insertion attempt: kind (segment, circumcenter,
+    offcenter, rejected, deleted), triangles created and deleted, walk steps,
+    bad triangles queued afterwards."""
+    out = np.zeros(rows.shape[0], dtype=TRACE_DTYPE)
+    out["kind"] = np.array(_TRACE_KINDS)[rows[:, 0]] if rows.shape[0] else []
+    for i, name in enumerate(TRACE_DTYPE.names[1:], start=1):
+        out[name] = rows[:, i]
+    return out
 

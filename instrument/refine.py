@@ -102,11 +102,11 @@ class Refiner(NamedTuple):
     hseq: np.ndarray  # insertion number (ties: earlier first),
     htri: np.ndarray  # triangle slot,
     hstamp: np.ndarray  # and its stamp when queued
-    enc: np.ndarray  # (E, 2) int32 ring of encroached subsegments (end vertices)
+    enc: np.ndarray  # (E, 4) int64 ring of encroached subsegments: ends, edge, its triangle's stamp
     cav: np.ndarray  # (T,) int64 scratch: cavity triangles
     fan: np.ndarray  # (T,) int64 scratch: the triangles an insertion made
     seen: np.ndarray  # (T,) int8 scratch: 1 in the cavity, 2 tested outside
-    bnd: np.ndarray  # (T, 4) int64 scratch: cavity boundary edge (twin, org, dest, record)
+    bnd: np.ndarray  # (T, 5) int64 scratch: cavity boundary edge (twin, org, dest, record, edge)
     bval: np.ndarray  # (T, 2) float64 scratch: area bound and attribute it passes on
     vslot: np.ndarray  # (V,) int64 scratch: new triangle starting at a vertex, -1
     trace: np.ndarray  # (N, 5) int64 rows: kind, created, deleted, walk steps, queue length (N = 0: off)
@@ -174,12 +174,30 @@ def _enc_len(r):
 
 
 @kernel
-def _enc_push(r, u, v):
+def _enc_push(r, m, e):
+    """Queue subsegment edge ``e``, by its ends and by its id: the id finds it
+    even at a vertex where two parts of the domain touch (rotating about
+    such a vertex does not reach every edge)."""
     cap = r.enc.shape[0]
     i = r.ipar[I_ETAIL] % cap
-    r.enc[i, 0] = u
-    r.enc[i, 1] = v
+    r.enc[i, 0] = m.corner[lnext(e)]
+    r.enc[i, 1] = m.corner[lprev(e)]
+    r.enc[i, 2] = e
+    r.enc[i, 3] = m.stamp[e // 3]
     r.ipar[I_ETAIL] += 1
+
+
+@kernel
+def _enc_edge(r, m, work, vtri, i, state):
+    """The subsegment edge of queue entry ``i``, or -1 if it is gone."""
+    u = r.enc[i, 0]
+    v = r.enc[i, 1]
+    e = r.enc[i, 2]
+    if not (m.stamp[e // 3] == r.enc[i, 3] and m.corner[lnext(e)] == u and m.corner[lprev(e)] == v):
+        e = _edge(m, work, vtri, u, v, state)
+    if e < 0 or m.seg[e] == NO_SEG:
+        return -1
+    return e
 
 
 # ------------------------------------------------------------- encroachment
@@ -216,7 +234,7 @@ def check_subsegment(r, m, e):
     if not hit and tw != NO_EDGE:
         hit = _encroaches(r, m.xy, o, d, m.corner[tw])
     if hit and _may_split(r, m, e):
-        _enc_push(r, o, d)
+        _enc_push(r, m, e)
     return hit
 
 
@@ -446,6 +464,7 @@ def _cavity(r, m, work, px, py, t0, t1, skip):
             r.bnd[nb, 1] = m.corner[lnext(e)]
             r.bnd[nb, 2] = m.corner[lprev(e)]
             r.bnd[nb, 3] = m.seg[e]
+            r.bnd[nb, 4] = e
             r.bval[nb, 0] = r.area[t]
             r.bval[nb, 1] = r.attr[t]
             nb += 1
@@ -515,14 +534,19 @@ def _room(r, m, nb):
         and spare_triangles(m) >= nb + 2
         and r.ipar[I_HSIZE] + nb + 2 <= r.hkey.shape[0]
         and _enc_len(r) + nb + 4 <= r.enc.shape[0]
-        and (r.trace.shape[0] == 0 or r.ipar[I_NTRACE] + 1 < r.trace.shape[0])
     )
+
+
+@kernel
+def _trace_full(r):
+    """The trace (if on) lacks room for the rows one more step may write."""
+    return r.trace.shape[0] > 0 and r.ipar[I_NTRACE] + 64 > r.trace.shape[0]
 
 
 @kernel
 def _trace(r, kind, created, deleted, steps, queue):
     i = r.ipar[I_NTRACE]
-    if r.trace.shape[0] > 0:
+    if i < r.trace.shape[0]:
         r.trace[i, 0] = kind
         r.trace[i, 1] = created
         r.trace[i, 2] = deleted
@@ -807,17 +831,21 @@ def split_encroached(r, m, segs, vmark, parent, vtri, work, triflaws, state):
     is spent).  Returns DONE, NEED_ROOM or PRECISION."""
     cap = r.enc.shape[0]
     while _enc_len(r) > 0 and r.ipar[I_BUDGET] != 0:
+        if _trace_full(r):
+            return NEED_ROOM
         i = r.ipar[I_EHEAD] % cap
-        u = r.enc[i, 0]
-        v = r.enc[i, 1]
-        e = _edge(m, work, vtri, u, v, state)
-        if e < 0 or m.seg[e] == NO_SEG:
+        e = _enc_edge(r, m, work, vtri, i, state)
+        if e < 0:
             r.ipar[I_EHEAD] += 1  # split or gone since it was queued
             continue
+        r.enc[i, 3] = m.stamp[e // 3]
         if not r.ipar[I_D]:
+            u = r.enc[i, 0]
+            v = r.enc[i, 1]
             if not _chew_delete(r, m, segs, vtri, work, e, state):
                 return NEED_ROOM
-            e = _edge(m, work, vtri, u, v, state)
+            if m.stamp[e // 3] != r.enc[i, 3] or m.corner[lnext(e)] != u:  # a deletion re-made it
+                e = _edge(m, work, vtri, u, v, state)
             if e < 0:
                 r.ipar[I_EHEAD] += 1
                 continue
@@ -849,7 +877,7 @@ def split_bad_triangle(r, m, segs, vmark, parent, vtri, work, t, state):
         if m.seg[e] != NO_SEG and _may_split(r, m, e):
             if _enc_len(r) + 1 > r.enc.shape[0]:
                 return NEED_ROOM
-            _enc_push(r, m.corner[lnext(e)], m.corner[lprev(e)])
+            _enc_push(r, m, e)
         work[C_REJECTED] += 1
         _trace(r, T_REJECTED, 0, 0, steps, r.ipar[I_HSIZE])
         return DONE
@@ -877,7 +905,7 @@ def split_bad_triangle(r, m, segs, vmark, parent, vtri, work, t, state):
             if dot < 0.0 and (r.ipar[I_D] or dot * dot >= r.par[P_LENS] * (ux * ux + uy * uy) * (vx * vx + vy * vy)):
                 encroached += 1
                 if r.ipar[I_Y] == 0 or (r.ipar[I_Y] == 1 and r.bnd[j, 0] != NO_EDGE):
-                    _enc_push(r, u, v)
+                    _enc_push(r, m, r.bnd[j, 4])
     if encroached:
         _unsee(r, n)
         work[C_REJECTED] += 1
@@ -926,6 +954,8 @@ def refine(r, m, segs, vmark, parent, vtri, work, state):
                 if m.stamp[t] > 0:
                     test_triangle(r, m, segs, vtri, work, t, state)
             r.ipar[I_PHASE] = 2
+        if _trace_full(r):
+            return NEED_ROOM
         if r.ipar[I_CURRENT] >= 0:  # the popped triangle (again after a NEED_ROOM)
             t = r.ipar[I_CURRENT]
             stamp = r.ipar[I_CURSTAMP]
