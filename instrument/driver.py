@@ -8,10 +8,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from . import counters
+from . import counters, quality
 from .mesh import NO_EDGE, NO_SEG, S_NVERT, live_triangles
 from .output import Result, _col, _put, edge_ends, unique_edges
-from . import quality
 from .pslg import Mesher, carve, clean_segments, enclose_hull, recover_segments, start
 from .strategies import strategy_id
 from .switches import Options, parse

@@ -11,9 +11,8 @@ and the caller falls back to a scan.
 
 from __future__ import annotations
 
-
-from .jit import kernel, kernel_inline
 from .counters import C_ORIENT, C_WALK
+from .jit import kernel, kernel_inline
 from .mesh import GHOST, NO_EDGE, is_ghost, lnext, lprev
 from .predicates import orient2d
 
@@ -41,6 +40,22 @@ def finite_start(m, t):
         if m.corner[3 * t + k] == GHOST:
             return m.twin[3 * t + k] // 3
     return t
+
+
+@kernel
+def _classify(m, t, px, py, zeros, zero_edge):
+    """Where in triangle ``t`` the point lies, given how many of its edges'
+    lines pass through it (``zeros``) and one such edge."""
+    if zeros == 0:
+        return LOC_INSIDE, 3 * t
+    if zeros == 1:
+        return LOC_ON_EDGE, zero_edge
+    for k in range(3):
+        e = 3 * t + k
+        v = m.corner[lnext(e)]
+        if m.xy[v, 0] == px and m.xy[v, 1] == py:
+            return LOC_ON_VERTEX, e
+    return LOC_ON_EDGE, zero_edge  # unreachable for exact predicates
 
 
 @kernel
@@ -84,16 +99,7 @@ def walk(m, work, t, px, py, state, max_steps):
                 zero_edge = e
         if moved:
             continue
-        if zeros == 0:
-            return LOC_INSIDE, 3 * t
-        if zeros == 1:
-            return LOC_ON_EDGE, zero_edge
-        for k in range(3):
-            e = 3 * t + k
-            v = m.corner[lnext(e)]
-            if xy[v, 0] == px and xy[v, 1] == py:
-                return LOC_ON_VERTEX, e
-        return LOC_ON_EDGE, zero_edge  # unreachable for exact predicates
+        return _classify(m, t, px, py, zeros, zero_edge)
     return LOC_FAILED, -1
 
 
@@ -141,16 +147,7 @@ def line_walk(m, work, t, px, py, max_steps):
                 zeros += 1
                 zero_edge = e
         if exit_edge < 0:
-            if zeros == 0:
-                return LOC_INSIDE, 3 * t
-            if zeros == 1:
-                return LOC_ON_EDGE, zero_edge
-            for k in range(3):
-                e = 3 * t + k
-                v = m.corner[lnext(e)]
-                if xy[v, 0] == px and xy[v, 1] == py:
-                    return LOC_ON_VERTEX, e
-            return LOC_ON_EDGE, zero_edge
+            return _classify(m, t, px, py, zeros, zero_edge)
         tw = m.twin[exit_edge]
         if tw == NO_EDGE or m.seg[exit_edge] >= 0:
             return LOC_BLOCKED, exit_edge

@@ -7,7 +7,8 @@ import math
 
 import numpy as np
 
-from . import cdt, refine as rf
+from . import cdt
+from . import refine as rf
 from .pslg import Mesher, _widen
 from .strategies import strategy_id
 from .switches import Options

@@ -42,8 +42,26 @@ from .counters import (
     C_WALK,
 )
 from .jit import kernel
-from .locate import LOC_BLOCKED, LOC_INSIDE, LOC_ON_EDGE, LOC_ON_VERTEX, line_walk, next_random
-from .mesh import NO_EDGE, NO_SEG, S_NSLOT, S_NVERT, bond, kill_triangle, lnext, lprev, new_triangle, spare_triangles
+from .locate import (
+    LOC_BLOCKED,
+    LOC_INSIDE,
+    LOC_ON_EDGE,
+    LOC_ON_VERTEX,
+    line_walk,
+    next_random,
+)
+from .mesh import (
+    NO_EDGE,
+    NO_SEG,
+    S_NSLOT,
+    S_NVERT,
+    bond,
+    kill_triangle,
+    lnext,
+    lprev,
+    new_triangle,
+    spare_triangles,
+)
 from .predicates import incircle, orient2d
 from .strategies import ADVERSARY, priority
 
