@@ -254,17 +254,25 @@ def _recover(m, work, segs, vmark, vtri, a, b, marker, source, buf, state):
 
 
 @kernel
-def _edge(m, work, vtri, u, v, state):
-    """The edge ``u -> v``, or -1 if the two are not joined."""
-    e0 = _find_vertex(m, work, vtri, u, state)
-    if e0 < 0:
-        return -1
+def _hit(m, e, v):
+    return m.corner[lprev(e)] == v if v >= 0 else m.seg[e] != NO_SEG
+
+
+@kernel
+def edge_around(m, e0, v):
+    """Rotate about ``org(e0)``: the first edge out of it whose destination is
+    ``v``, or with ``v < 0`` the first subsegment at it (incoming edges are
+    checked too, so a subsegment on the boundary is found).  -1 if none."""
     e = e0
-    for _ in range(m.stamp.shape[0]):  # counter-clockwise around u
-        if m.corner[lprev(e)] == v:
+    for _ in range(m.stamp.shape[0]):  # counter-clockwise
+        if _hit(m, e, v):
             return e
+        if v < 0 and m.seg[lprev(e)] != NO_SEG:
+            return lprev(e)
         nxt = m.twin[lprev(e)]
-        if nxt == NO_EDGE or nxt == e0:
+        if nxt == e0:
+            return -1
+        if nxt == NO_EDGE:
             break
         e = nxt
     e = e0
@@ -275,9 +283,18 @@ def _edge(m, work, vtri, u, v, state):
         e = lnext(tw)
         if e == e0:
             break
-        if m.corner[lprev(e)] == v:
+        if _hit(m, e, v):
             return e
     return -1
+
+
+@kernel
+def _edge(m, work, vtri, u, v, state):
+    """The edge ``u -> v``, or -1 if the two are not joined."""
+    e0 = _find_vertex(m, work, vtri, u, state)
+    if e0 < 0:
+        return -1
+    return edge_around(m, e0, v)
 
 
 @kernel

@@ -1,7 +1,7 @@
 """``triangulate``: validate the input dict, run the pipeline, build the Result.
 
 Pipeline: Delaunay triangulation -> segment recovery, holes, regions (``p``)
--> (quality refinement: issue 5) -> output arrays.
+-> quality refinement (``quality``) -> output arrays.
 """
 
 from __future__ import annotations

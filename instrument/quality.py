@@ -86,23 +86,12 @@ def _grow(ms: Mesher, r: rf.Refiner) -> rf.Refiner:
     trace = r.trace
     if trace.shape[0] and r.ipar[rf.I_NTRACE] + 64 > trace.shape[0]:
         trace = _widen(trace, 2 * trace.shape[0], 0)
-    return r._replace(
-        vtype=_widen(r.vtype, nvcap, 0),
-        vslot=_widen(r.vslot, nvcap, -1),
-        area=_widen(r.area, slots, -1.0),
-        attr=_widen(r.attr, slots, 0.0),
-        hkey=_widen(r.hkey, heap, 0.0),
-        hseq=_widen(r.hseq, heap, 0),
-        htri=_widen(r.htri, heap, 0),
-        hstamp=_widen(r.hstamp, heap, 0),
-        enc=enc,
-        cav=_widen(r.cav, slots, 0),
-        fan=_widen(r.fan, slots, 0),
-        seen=_widen(r.seen, slots, 0),
-        bnd=_widen(r.bnd, slots, 0),
-        bval=_widen(r.bval, slots, 0.0),
-        trace=trace,
-    )
+    per_vertex = {"vtype": 0, "vslot": -1}
+    per_slot = {"area": -1.0, "attr": 0.0, "cav": 0, "fan": 0, "seen": 0, "bnd": 0, "bval": 0.0}
+    grown = {k: _widen(getattr(r, k), nvcap, fill) for k, fill in per_vertex.items()}
+    grown |= {k: _widen(getattr(r, k), slots, fill) for k, fill in per_slot.items()}
+    grown |= {k: _widen(getattr(r, k), heap, 0) for k in ("hkey", "hseq", "htri", "hstamp")}
+    return r._replace(enc=enc, trace=trace, **grown)
 
 
 def run(ms: Mesher, o: Options, *, strategy: str = "triangle", steiner: str = "offcenter", trace: bool = False) -> np.ndarray | None:
@@ -111,9 +100,7 @@ def run(ms: Mesher, o: Options, *, strategy: str = "triangle", steiner: str = "o
         raise ValueError(f"steiner must be one of {', '.join(STEINER)}, not {steiner!r}")
     if o.S == 0:
         return np.zeros(0, dtype=TRACE_DTYPE) if trace else None
-    r = _new_refiner(ms, o, strategy, steiner, trace)
-    nin = ms.n_vertices
-    r.vtype[:nin] = rf.V_INPUT
+    r = _new_refiner(ms, o, strategy, steiner, trace)  # every vertex so far: V_INPUT (0)
     cdt.build_vertex_edges(ms.m, ms.vtri)
     rf.tally_encroached(r, ms.m)
     while True:

@@ -25,7 +25,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .cdt import R_NREC, _edge, _remember, new_record
+from .cdt import R_NREC, _edge, _org_edge, _remember, edge_around, new_record
 from .counters import (
     C_CIRCUMCENTER,
     C_CREATED,
@@ -63,7 +63,7 @@ from .mesh import (
     spare_triangles,
 )
 from .predicates import incircle, orient2d
-from .strategies import ADVERSARY, priority
+from .strategies import ADVERSARY, RANDOM, priority
 
 # vertex types
 V_INPUT = 0
@@ -222,9 +222,9 @@ def _enc_edge(r, m, work, vtri, i, state):
 
 
 @kernel
-def _encroaches(r, xy, e0, e1, a):
-    """Does vertex ``a`` lie in the diametral lens (or circle) of ``e0 e1``?"""
-    ax, ay = xy[a, 0], xy[a, 1]
+def _in_lens(r, xy, e0, e1, ax, ay):
+    """Does the point (ax, ay) lie in the diametral lens (or circle with -D)
+    of ``e0 e1``?"""
     ux, uy = xy[e0, 0] - ax, xy[e0, 1] - ay
     vx, vy = xy[e1, 0] - ax, xy[e1, 1] - ay
     dot = ux * vx + uy * vy
@@ -247,10 +247,12 @@ def check_subsegment(r, m, e):
     """Queue subsegment edge ``e`` if an apex on either side encroaches it."""
     o = m.corner[lnext(e)]
     d = m.corner[lprev(e)]
-    hit = _encroaches(r, m.xy, o, d, m.corner[e])
+    a = m.corner[e]
+    hit = _in_lens(r, m.xy, o, d, m.xy[a, 0], m.xy[a, 1])
     tw = m.twin[e]
     if not hit and tw != NO_EDGE:
-        hit = _encroaches(r, m.xy, o, d, m.corner[tw])
+        b = m.corner[tw]
+        hit = _in_lens(r, m.xy, o, d, m.xy[b, 0], m.xy[b, 1])
     if hit and _may_split(r, m, e):
         _enc_push(r, m, e)
     return hit
@@ -261,8 +263,8 @@ def check_subsegment(r, m, e):
 
 @kernel
 def _shape(xy, a, b, c):
-    """Squared shortest edge, cos^2 of the smallest angle, twice the area, and
-    the shortest edge's end vertices."""
+    """Squared shortest edge, cos^2 of the smallest angle, twice the area,
+    squared circumradius, and the shortest edge's end vertices."""
     la = (xy[b, 0] - xy[c, 0]) ** 2 + (xy[b, 1] - xy[c, 1]) ** 2  # opposite a
     lb = (xy[c, 0] - xy[a, 0]) ** 2 + (xy[c, 1] - xy[a, 1]) ** 2
     lc = (xy[a, 0] - xy[b, 0]) ** 2 + (xy[a, 1] - xy[b, 1]) ** 2
@@ -277,44 +279,16 @@ def _shape(xy, a, b, c):
     if dot < 0.0:  # an obtuse smallest angle cannot happen; keep the sign meaningful
         cos2 = -cos2
     area2 = (xy[b, 0] - xy[a, 0]) * (xy[c, 1] - xy[a, 1]) - (xy[b, 1] - xy[a, 1]) * (xy[c, 0] - xy[a, 0])
-    return mn, cos2, area2, u, v
+    circ2 = la * lb * lc / (area2 * area2) / 4.0 if area2 != 0.0 else np.inf
+    return mn, cos2, area2, circ2, u, v
 
 
 @kernel
-def _segment_of(m, segs, vtri, v, state, work):
+def _segment_of(m, vtri, v):
     """The record of some subsegment at vertex ``v`` (-1 if none)."""
-    e0 = _edge_from(m, vtri, v)
-    if e0 < 0:
-        return -1
-    e = e0
-    for _ in range(m.stamp.shape[0]):  # counter-clockwise, then clockwise
-        if m.seg[e] != NO_SEG:
-            return m.seg[e]
-        if m.seg[lprev(e)] != NO_SEG:
-            return m.seg[lprev(e)]
-        nxt = m.twin[lprev(e)]
-        if nxt == NO_EDGE or nxt == e0:
-            break
-        e = nxt
-    e = e0
-    for _ in range(m.stamp.shape[0]):
-        tw = m.twin[e]
-        if tw == NO_EDGE:
-            break
-        e = lnext(tw)
-        if e == e0:
-            break
-        if m.seg[e] != NO_SEG:
-            return m.seg[e]
-    return -1
-
-
-@kernel
-def _edge_from(m, vtri, v):
-    e = vtri[v]
-    if e >= 0 and m.stamp[e // 3] > 0 and m.corner[lnext(e)] == v:
-        return e
-    return -1
+    e0 = _org_edge(m, vtri, v)
+    e = edge_around(m, e0, -1) if e0 >= 0 else -1
+    return m.seg[e] if e >= 0 else -1
 
 
 @kernel
@@ -329,8 +303,8 @@ def _small_input_angle(m, segs, r, vtri, u, v, state, work):
     same distance from J (the same concentric shell)."""
     if r.vtype[u] != V_SEGMENT or r.vtype[v] != V_SEGMENT:
         return False
-    s1 = _segment_of(m, segs, vtri, u, state, work)
-    s2 = _segment_of(m, segs, vtri, v, state, work)
+    s1 = _segment_of(m, vtri, u)
+    s2 = _segment_of(m, vtri, v)
     if s1 < 0 or s2 < 0:
         return False
     xy = m.xy
@@ -356,7 +330,7 @@ def test_triangle(r, m, segs, vtri, work, t, state):
     ``testtriangle``); the caller made sure the heap has room."""
     xy = m.xy
     a, b, c = m.corner[3 * t], m.corner[3 * t + 1], m.corner[3 * t + 2]
-    mn, cos2, area2, u, v = _shape(xy, a, b, c)
+    mn, cos2, area2, circ2, u, v = _shape(xy, a, b, c)
     bad = False
     if r.ipar[I_FIXAREA] and 0.5 * area2 > r.par[P_MAXAREA]:
         bad = True
@@ -373,17 +347,11 @@ def test_triangle(r, m, segs, vtri, work, t, state):
         bad = not exempt
     if bad:
         strategy = r.ipar[I_STRATEGY]
-        circ2 = 0.0
-        created = 0
-        if strategy != 0:
-            la = (xy[b, 0] - xy[c, 0]) ** 2 + (xy[b, 1] - xy[c, 1]) ** 2
-            lb = (xy[c, 0] - xy[a, 0]) ** 2 + (xy[c, 1] - xy[a, 1]) ** 2
-            lc = (xy[a, 0] - xy[b, 0]) ** 2 + (xy[a, 1] - xy[b, 1]) ** 2
-            circ2 = la * lb * lc / (4.0 * area2 * area2) if area2 != 0.0 else np.inf
-        if strategy == ADVERSARY:
-            created = _would_create(r, m, work, t)
-        next_random(state)
-        rnd = float(state[0])
+        created = _would_create(r, m, work, t) if strategy == ADVERSARY else 0
+        rnd = 0.0
+        if strategy == RANDOM:  # only then: the walks share this generator
+            next_random(state)
+            rnd = float(state[0])
         key = priority(strategy, mn, cos2, circ2, created, r.ipar[I_SEQ], rnd)
         heap_push(r, key, t, m.stamp[t])
 
@@ -668,7 +636,7 @@ def delete_free_vertex(r, m, segs, vtri, work, v, state):
     """Remove free vertex ``v`` (Chew's rule: it sits in a subsegment's
     diametral circle) and re-triangulate its star.  Returns False (nothing
     changed) if ``v`` is on the boundary or the scratch space is short."""
-    e0 = _edge_from(m, vtri, v)
+    e0 = _org_edge(m, vtri, v)
     if e0 < 0:
         return False
     # the star, counter-clockwise: w[i] = dest of the i-th edge out of v
@@ -915,12 +883,7 @@ def split_bad_triangle(r, m, segs, vmark, parent, vtri, work, t, state):
     encroached = 0
     for j in range(nb):
         if r.bnd[j, 3] != NO_SEG:
-            u = r.bnd[j, 1]
-            v = r.bnd[j, 2]
-            ux, uy = xy[u, 0] - px, xy[u, 1] - py
-            vx, vy = xy[v, 0] - px, xy[v, 1] - py
-            dot = ux * vx + uy * vy
-            if dot < 0.0 and (r.ipar[I_D] or dot * dot >= r.par[P_LENS] * (ux * ux + uy * uy) * (vx * vx + vy * vy)):
+            if _in_lens(r, xy, r.bnd[j, 1], r.bnd[j, 2], px, py):
                 encroached += 1
                 if r.ipar[I_Y] == 0 or (r.ipar[I_Y] == 1 and r.bnd[j, 0] != NO_EDGE):
                     _enc_push(r, m, r.bnd[j, 4])

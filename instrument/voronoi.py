@@ -17,10 +17,10 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["diagram"]
+__all__ = ["diagram", "triangle_rows"]
 
 
-def _triangles(mesh: Mapping[str, Any]) -> np.ndarray:
+def triangle_rows(mesh: Mapping[str, Any]) -> np.ndarray:
     """The mesh's triangles as int64 rows; a missing or empty key means none."""
     t = mesh.get("triangles")
     if t is None or np.size(t) == 0:
@@ -46,7 +46,7 @@ def diagram(mesh: Mapping[str, Any]) -> dict[str, np.ndarray]:
     its length is the hull edge's.
     """
     xy = np.asarray(mesh["vertices"], dtype=np.float64).reshape(-1, 2)
-    t = _triangles(mesh)[:, :3]
+    t = triangle_rows(mesh)[:, :3]
     m = len(t)
     torg, tdest, tapex = xy[t[:, 0]], xy[t[:, 1]], xy[t[:, 2]]
     # The same operations in the same order as Triangle, so that the numbers

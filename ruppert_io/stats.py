@@ -24,6 +24,8 @@ from typing import Any
 
 import numpy as np
 
+from instrument.voronoi import triangle_rows as _triangles
+
 __all__ = [
     "MeshCounts",
     "QualityStats",
@@ -87,12 +89,6 @@ def _array(mesh: Mapping[str, Any], key: str, cols: int, dtype) -> np.ndarray:
         np.zeros((0, cols), dtype=dtype)
 
 
-def _triangles(mesh: Mapping[str, Any]) -> np.ndarray:
-    t = mesh.get("triangles")
-    if t is None or np.size(t) == 0:
-        return np.zeros((0, 3), dtype=np.int64)
-    t = np.asarray(t, dtype=np.int64)
-    return t.reshape(len(t), -1)
 
 
 def _edge_keys(corners: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
