@@ -4,11 +4,13 @@ when it asks, turn its precision failure into Triangle's error."""
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 
 import numpy as np
 
 from . import cdt
 from . import refine as rf
+from .mesh import S_NSLOT
 from .pslg import Mesher, _widen
 from .strategies import strategy_id
 from .switches import Options
@@ -22,7 +24,7 @@ class PrecisionError(RuntimeError):
     """Triangle's "Ran out of precision" failure: segments too short to split."""
 
 
-def _new_refiner(ms: Mesher, o: Options, strategy: str, steiner: str, trace: bool) -> rf.Refiner:
+def _new_refiner(ms: Mesher, o: Options, strategy: str, steiner: str, trace: bool, user: bool = False) -> rf.Refiner:
     m = ms.m
     slots = m.stamp.shape[0]
     nvcap = m.xy.shape[0]
@@ -36,7 +38,9 @@ def _new_refiner(ms: Mesher, o: Options, strategy: str, steiner: str, trace: boo
     ipar[rf.I_BUDGET] = o.S
     ipar[rf.I_OFFCENTER] = int(steiner == "offcenter")
     ipar[rf.I_ANGLE] = int(o.q and o.min_angle > 0)
+    ipar[rf.I_USER] = int(o.u and not user)
     ipar[rf.I_CURRENT] = -1
+    ipar[rf.I_EFREE] = -1
     theta = math.radians(o.min_angle) if o.q else 0.0
     good = math.cos(theta) ** 2
     par[rf.P_GOODANGLE] = good
@@ -76,13 +80,8 @@ def _grow(ms: Mesher, r: rf.Refiner) -> rf.Refiner:
     nvcap = ms.m.xy.shape[0]
     heap = max(2 * r.hkey.shape[0], slots + 16)
     enc = r.enc
-    if enc.shape[0] < 3 * slots + 16:  # unroll the ring
-        head, tail = int(r.ipar[rf.I_EHEAD]), int(r.ipar[rf.I_ETAIL])
-        live = enc[np.arange(head, tail) % enc.shape[0]]
-        enc = np.zeros((2 * (3 * slots + 16), 4), dtype=np.int64)
-        enc[: live.shape[0]] = live
-        r.ipar[rf.I_EHEAD] = 0
-        r.ipar[rf.I_ETAIL] = live.shape[0]
+    if enc.shape[0] < 3 * slots + 16:  # a pool: slots keep their places
+        enc = _widen(enc, 2 * (3 * slots + 16), 0)
     trace = r.trace
     if trace.shape[0] and r.ipar[rf.I_NTRACE] + 64 > trace.shape[0]:
         trace = _widen(trace, 2 * trace.shape[0], 0)
@@ -94,17 +93,39 @@ def _grow(ms: Mesher, r: rf.Refiner) -> rf.Refiner:
     return r._replace(enc=enc, trace=trace, **grown)
 
 
-def run(ms: Mesher, o: Options, *, strategy: str = "triangle", steiner: str = "offcenter", trace: bool = False) -> np.ndarray | None:
-    """Refine ``ms`` in place under ``o``; returns the trace rows if asked."""
+def run(
+    ms: Mesher,
+    o: Options,
+    *,
+    strategy: str = "triangle",
+    steiner: str = "offcenter",
+    trace: bool = False,
+    triunsuitable: Callable | None = None,
+) -> np.ndarray | None:
+    """Refine ``ms`` in place under ``o``; returns the trace rows if asked.
+
+    With ``o.u`` and a Python ``triunsuitable``, the kernel refines until
+    nothing is bad, then the callable judges every triangle made since, the
+    unsuitable ones are queued and the kernel goes on, until a round finds
+    none: the hot loop never calls Python."""
     if steiner not in STEINER:
         raise ValueError(f"steiner must be one of {', '.join(STEINER)}, not {steiner!r}")
     if o.S == 0:
         return np.zeros(0, dtype=TRACE_DTYPE) if trace else None
-    r = _new_refiner(ms, o, strategy, steiner, trace)  # every vertex so far: V_INPUT (0)
+    user = triunsuitable if o.u else None
+    r = _new_refiner(ms, o, strategy, steiner, trace, user is not None)  # every vertex so far: V_INPUT (0)
     cdt.build_vertex_edges(ms.m, ms.vtri)
-    rf.tally_encroached(r, ms.m)
+    rf.tally_encroached(r, ms.m, ms.segs)
+    judged = np.zeros(0, dtype=ms.m.stamp.dtype)  # the stamp each slot had when the callable judged it
     while True:
         status = rf.refine(r, ms.m, ms.segs, ms.vmark, ms.parent, ms.vtri, ms.work, ms.state)
+        if status == rf.DONE and user is not None and r.ipar[rf.I_BUDGET] != 0:
+            judged, bad = _judge(ms.m, user, judged)
+            while r.hkey.shape[0] < int(r.ipar[rf.I_HSIZE]) + bad.shape[0] + 16:
+                r = _grow(ms, r)
+            rf.queue_triangles(r, ms.m, ms.work, bad, ms.state)
+            if bad.shape[0]:
+                continue
         if status == rf.DONE:
             break
         if status == rf.PRECISION:
@@ -123,6 +144,25 @@ def run(ms: Mesher, o: Options, *, strategy: str = "triangle", steiner: str = "o
         ms.region_attr = r.attr
     ms.dead = np.flatnonzero(r.vtype[: ms.n_vertices] == rf.V_DEAD)
     return _trace_table(r.trace[: int(r.ipar[rf.I_NTRACE])]) if trace else None
+
+
+def _judge(m, user: Callable, judged: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Ask ``user(org, dest, apex, area)`` about every live triangle it has
+    not seen; returns the updated stamps and the unsuitable slots."""
+    n = int(m.size[S_NSLOT])
+    stamp = m.stamp[:n]
+    if judged.shape[0] < n:
+        judged = _widen(judged, n, 0)
+    fresh = np.flatnonzero((stamp > 0) & (stamp != judged[:n]))
+    judged[fresh] = stamp[fresh]
+    xy = m.xy
+    bad = []
+    for t in fresh:
+        o, d, a = (xy[m.corner[3 * t + k]] for k in range(3))
+        area = 0.5 * ((d[0] - o[0]) * (a[1] - o[1]) - (d[1] - o[1]) * (a[0] - o[0]))
+        if user(o.copy(), d.copy(), a.copy(), area):
+            bad.append(t)
+    return judged, np.asarray(bad, dtype=np.int64)
 
 
 TRACE_DTYPE = np.dtype(

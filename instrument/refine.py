@@ -90,15 +90,18 @@ I_OFFCENTER = 6
 I_ANGLE = 7  # the angle test is on
 I_HSIZE = 8  # heap entries
 I_SEQ = 9  # heap insertions so far
-I_EHEAD = 10  # encroached queue: next to pop
-I_ETAIL = 11  # encroached queue: next free slot
+I_ECURSOR = 10  # encroached pool: the slot the current pass is at
+I_EFRESH = 11  # encroached pool: slots ever used
 I_NTRACE = 12
 I_PHASE = 13  # 0 split initial encroachments, 1 tally triangles, 2 main loop
 I_ERRV = 14  # precision error: the subsegment's end vertices
 I_ERRW = 15
 I_CURRENT = 16  # triangle being split, kept across a NEED_ROOM (-1 none)
 I_CURSTAMP = 17  # and its stamp when it was queued
-I_NPAR = 18
+I_USER = 18  # the -u size test: 0 off, 1 Triangle's built-in one (a Python one runs between calls)
+I_ELIVE = 19  # encroached pool: live records
+I_EFREE = 20  # encroached pool: last freed slot, -1 none (freed slots chain through column 1)
+I_NPAR = 21
 
 P_GOODANGLE = 0  # cos^2 of the minimum angle
 P_LENS = 1  # (2 cos^2 - 1)^2: the lens test
@@ -120,7 +123,7 @@ class Refiner(NamedTuple):
     hseq: np.ndarray  # insertion number (ties: earlier first),
     htri: np.ndarray  # triangle slot,
     hstamp: np.ndarray  # and its stamp when queued
-    enc: np.ndarray  # (E, 4) int64 ring of encroached subsegments: ends, edge, its triangle's stamp
+    enc: np.ndarray  # (E, 4) int64 pool of encroached subsegments: ends (-1: free slot), edge, its triangle's stamp
     cav: np.ndarray  # (T,) int64 scratch: cavity triangles
     fan: np.ndarray  # (T,) int64 scratch: the triangles an insertion made
     seen: np.ndarray  # (T,) int8 scratch: 1 in the cavity, 2 tested outside
@@ -188,21 +191,37 @@ def heap_pop(r):
 
 @kernel
 def _enc_len(r):
-    return r.ipar[I_ETAIL] - r.ipar[I_EHEAD]
+    return r.ipar[I_ELIVE]
 
 
 @kernel
 def _enc_push(r, m, e):
     """Queue subsegment edge ``e``, by its ends and by its id: the id finds it
     even at a vertex where two parts of the domain touch (rotating about
-    such a vertex does not reach every edge)."""
-    cap = r.enc.shape[0]
-    i = r.ipar[I_ETAIL] % cap
+    such a vertex does not reach every edge).
+
+    The queue is a pool, as Triangle's: a record takes the slot freed last
+    (or a fresh one), and passes visit the slots in order, so a record in a
+    reused slot behind the pass waits for the next pass."""
+    i = r.ipar[I_EFREE]
+    if i >= 0:
+        r.ipar[I_EFREE] = r.enc[i, 1]
+    else:
+        i = r.ipar[I_EFRESH]
+        r.ipar[I_EFRESH] += 1
     r.enc[i, 0] = m.corner[lnext(e)]
     r.enc[i, 1] = m.corner[lprev(e)]
     r.enc[i, 2] = e
     r.enc[i, 3] = m.stamp[e // 3]
-    r.ipar[I_ETAIL] += 1
+    r.ipar[I_ELIVE] += 1
+
+
+@kernel
+def _enc_free(r, i):
+    r.enc[i, 0] = -1
+    r.enc[i, 1] = r.ipar[I_EFREE]
+    r.ipar[I_EFREE] = i
+    r.ipar[I_ELIVE] -= 1
 
 
 @kernel
@@ -243,19 +262,27 @@ def _may_split(r, m, e):
 
 
 @kernel
-def check_subsegment(r, m, e):
-    """Queue subsegment edge ``e`` if an apex on either side encroaches it."""
-    o = m.corner[lnext(e)]
-    d = m.corner[lprev(e)]
-    a = m.corner[e]
-    hit = _in_lens(r, m.xy, o, d, m.xy[a, 0], m.xy[a, 1])
+def _queue_side(r, m, e, hit):
+    """Queue subsegment edge ``e`` (whose own apex encroaches if ``hit``) on
+    an encroaching side: the other side if its apex encroaches, as Triangle
+    orients its records, since the side decides where shells are measured
+    from.  Returns whether it is encroached."""
     tw = m.twin[e]
-    if not hit and tw != NO_EDGE:
+    if tw != NO_EDGE:
         b = m.corner[tw]
-        hit = _in_lens(r, m.xy, o, d, m.xy[b, 0], m.xy[b, 1])
+        if _in_lens(r, m.xy, m.corner[lnext(e)], m.corner[lprev(e)], m.xy[b, 0], m.xy[b, 1]):
+            e = tw
+            hit = True
     if hit and _may_split(r, m, e):
         _enc_push(r, m, e)
     return hit
+
+
+@kernel
+def check_subsegment(r, m, e):
+    """Queue subsegment edge ``e`` if an apex on either side encroaches it."""
+    a = m.corner[e]
+    return _queue_side(r, m, e, _in_lens(r, m.xy, m.corner[lnext(e)], m.corner[lprev(e)], m.xy[a, 0], m.xy[a, 1]))
 
 
 # ------------------------------------------------------------- bad triangles
@@ -325,6 +352,29 @@ def _small_input_angle(m, segs, r, vtri, u, v, state, work):
 
 
 @kernel
+def builtin_unsuitable(xy, o, d, a):
+    """Triangle's sample ``triunsuitable``: the longest edge squared exceeds
+    0.05 (x^2 + y^2) + 0.02 at the origin vertex ``o``."""
+    od = (xy[o, 0] - xy[d, 0]) ** 2 + (xy[o, 1] - xy[d, 1]) ** 2
+    da = (xy[d, 0] - xy[a, 0]) ** 2 + (xy[d, 1] - xy[a, 1]) ** 2
+    ao = (xy[a, 0] - xy[o, 0]) ** 2 + (xy[a, 1] - xy[o, 1]) ** 2
+    return max(od, da, ao) > 0.05 * (xy[o, 0] ** 2 + xy[o, 1] ** 2) + 0.02
+
+
+@kernel
+def _queue(r, m, work, t, mn, cos2, circ2, state):
+    """Put bad triangle ``t`` on the heap under the strategy's priority."""
+    strategy = r.ipar[I_STRATEGY]
+    created = _would_create(r, m, work, t) if strategy == ADVERSARY else 0
+    rnd = 0.0
+    if strategy == RANDOM:  # only then: the walks share this generator
+        next_random(state)
+        rnd = float(state[0])
+    key = priority(strategy, mn, cos2, circ2, created, r.ipar[I_SEQ], rnd)
+    heap_push(r, key, t, m.stamp[t])
+
+
+@kernel
 def test_triangle(r, m, segs, vtri, work, t, state):
     """Queue triangle ``t`` if it is too big or too skinny (Triangle's
     ``testtriangle``); the caller made sure the heap has room."""
@@ -336,6 +386,8 @@ def test_triangle(r, m, segs, vtri, work, t, state):
         bad = True
     if not bad and r.ipar[I_VARAREA] and r.area[t] > 0.0 and 0.5 * area2 > r.area[t]:
         bad = True
+    if not bad and r.ipar[I_USER] == 1 and builtin_unsuitable(xy, a, b, c):
+        bad = True
     if not bad and r.ipar[I_ANGLE] and cos2 > r.par[P_GOODANGLE]:
         # the shortest edge is not a subsegment and its ends lie on segments
         # meeting at a small angle: leave it alone
@@ -346,14 +398,19 @@ def test_triangle(r, m, segs, vtri, work, t, state):
         exempt = m.seg[3 * t + k] == NO_SEG and _small_input_angle(m, segs, r, vtri, u, v, state, work)
         bad = not exempt
     if bad:
-        strategy = r.ipar[I_STRATEGY]
-        created = _would_create(r, m, work, t) if strategy == ADVERSARY else 0
-        rnd = 0.0
-        if strategy == RANDOM:  # only then: the walks share this generator
-            next_random(state)
-            rnd = float(state[0])
-        key = priority(strategy, mn, cos2, circ2, created, r.ipar[I_SEQ], rnd)
-        heap_push(r, key, t, m.stamp[t])
+        _queue(r, m, work, t, mn, cos2, circ2, state)
+
+
+@kernel
+def queue_triangles(r, m, work, ts, state):
+    """Queue the live triangles ``ts`` (a user's size test found them
+    unsuitable); the caller made sure the heap has room."""
+    xy = m.xy
+    for i in range(ts.shape[0]):
+        t = ts[i]
+        if m.stamp[t] > 0:
+            mn, cos2, area2, circ2, u, v = _shape(xy, m.corner[3 * t], m.corner[3 * t + 1], m.corner[3 * t + 2])
+            _queue(r, m, work, t, mn, cos2, circ2, state)
 
 
 # ---------------------------------------------------------- new vertices
@@ -732,13 +789,9 @@ def _chew_delete(r, m, segs, vtri, work, e, state):
                 return False
             if not delete_free_vertex(r, m, segs, vtri, work, a, state):
                 break
-            f = _edge(m, work, vtri, o, d, state)
+            f = _edge(m, work, vtri, o, d, state)  # the same side again
             if f < 0:
                 return True
-            if side == 1:
-                f = m.twin[f]
-                if f == NO_EDGE:
-                    break
     return True
 
 
@@ -766,7 +819,7 @@ def split_subsegment(r, m, segs, vmark, parent, vtri, work, e, triflaws, state):
         while length < 1.5 * p2:
             p2 *= 0.5
         split = p2 / length
-        if acute_dest:
+        if not acute_org:  # e is on the encroaching side: both acute, measure from org
             split = 1.0 - split
     px = xy[o, 0] + split * ex
     py = xy[o, 1] + split * ey
@@ -800,13 +853,13 @@ def split_subsegment(r, m, segs, vmark, parent, vtri, work, e, triflaws, state):
     if r.ipar[I_BUDGET] > 0:
         r.ipar[I_BUDGET] -= 1
     _test_fan(r, m, segs, vtri, work, nb, triflaws, state)
-    # the halves themselves
-    ea = _edge(m, work, vtri, v, o, state)
-    if ea >= 0:
-        check_subsegment(r, m, ea)
+    # the halves themselves, on the side e was on
     eb = _edge(m, work, vtri, v, d, state)
     if eb >= 0:
         check_subsegment(r, m, eb)
+    ea = _edge(m, work, vtri, o, v, state)
+    if ea >= 0:
+        check_subsegment(r, m, ea)
     _trace(r, T_SEGMENT, nb, n, 0, r.ipar[I_HSIZE])
     return DONE
 
@@ -814,31 +867,34 @@ def split_subsegment(r, m, segs, vmark, parent, vtri, work, e, triflaws, state):
 @kernel
 def split_encroached(r, m, segs, vmark, parent, vtri, work, triflaws, state):
     """Split queued encroached subsegments until none is left (or the budget
-    is spent).  Returns DONE, NEED_ROOM or PRECISION."""
-    cap = r.enc.shape[0]
+    is spent), in passes over the pool.  Returns DONE, NEED_ROOM or
+    PRECISION."""
     while _enc_len(r) > 0 and r.ipar[I_BUDGET] != 0:
+        i = r.ipar[I_ECURSOR]
+        if i >= r.ipar[I_EFRESH]:  # the next pass
+            r.ipar[I_ECURSOR] = 0
+            continue
+        if r.enc[i, 0] < 0:
+            r.ipar[I_ECURSOR] = i + 1
+            continue
         if _trace_full(r):
             return NEED_ROOM
-        i = r.ipar[I_EHEAD] % cap
         e = _enc_edge(r, m, work, vtri, i, state)
-        if e < 0:
-            r.ipar[I_EHEAD] += 1  # split or gone since it was queued
-            continue
-        r.enc[i, 3] = m.stamp[e // 3]
-        if not r.ipar[I_D]:
+        if e >= 0:
+            r.enc[i, 3] = m.stamp[e // 3]
+        if e >= 0 and not r.ipar[I_D]:
             u = r.enc[i, 0]
             v = r.enc[i, 1]
             if not _chew_delete(r, m, segs, vtri, work, e, state):
                 return NEED_ROOM
             if m.stamp[e // 3] != r.enc[i, 3] or m.corner[lnext(e)] != u:  # a deletion re-made it
                 e = _edge(m, work, vtri, u, v, state)
-            if e < 0:
-                r.ipar[I_EHEAD] += 1
-                continue
-        status = split_subsegment(r, m, segs, vmark, parent, vtri, work, e, triflaws, state)
-        if status != DONE:
-            return status
-        r.ipar[I_EHEAD] += 1
+        if e >= 0:  # (else split or gone since it was queued)
+            status = split_subsegment(r, m, segs, vmark, parent, vtri, work, e, triflaws, state)
+            if status != DONE:
+                return status
+        _enc_free(r, i)
+        r.ipar[I_ECURSOR] = i + 1
     return DONE
 
 
@@ -885,8 +941,7 @@ def split_bad_triangle(r, m, segs, vmark, parent, vtri, work, t, state):
         if r.bnd[j, 3] != NO_SEG:
             if _in_lens(r, xy, r.bnd[j, 1], r.bnd[j, 2], px, py):
                 encroached += 1
-                if r.ipar[I_Y] == 0 or (r.ipar[I_Y] == 1 and r.bnd[j, 0] != NO_EDGE):
-                    _enc_push(r, m, r.bnd[j, 4])
+                _queue_side(r, m, r.bnd[j, 4], True)
     if encroached:
         _unsee(r, n)
         work[C_REJECTED] += 1
@@ -904,17 +959,32 @@ def split_bad_triangle(r, m, segs, vmark, parent, vtri, work, t, state):
     return DONE
 
 
+def tally_encroached(r, m, segs):
+    """Queue every encroached subsegment, in the order the subsegments were
+    made (Triangle's pool order), each edge once."""
+    n = int(m.size[S_NSLOT])
+    e = np.flatnonzero(m.seg[: 3 * n] != NO_SEG)
+    e = e[m.stamp[e // 3] > 0]
+    # one side per subsegment: the one its record's ends run along (the
+    # edge it was made on), else the only one
+    rec = m.seg[e]
+    xy = m.xy
+    k = e % 3
+    org, dest = m.corner[e - k + (k + 1) % 3], m.corner[e - k + (k + 2) % 3]
+    ends = segs.ends[rec]
+    along = np.einsum("ij,ij->i", xy[dest] - xy[org], xy[ends[:, 1]] - xy[ends[:, 0]]) > 0
+    first = along | (m.twin[e] == NO_EDGE)
+    e = e[first]
+    e = e[np.unique(m.seg[e], return_index=True)[1]]
+    _tally(r, m, e)
+
+
 @kernel
-def tally_encroached(r, m):
-    """Queue every encroached subsegment (each edge once); the caller made
+def _tally(r, m, edges):
+    """Queue the encroached ones of subsegment ``edges``; the caller made
     room for all of them."""
-    for t in range(m.size[S_NSLOT]):
-        if m.stamp[t] <= 0:
-            continue
-        for k in range(3):
-            e = 3 * t + k
-            if m.seg[e] != NO_SEG and (m.twin[e] == NO_EDGE or e < m.twin[e]):
-                check_subsegment(r, m, e)
+    for i in range(edges.shape[0]):
+        check_subsegment(r, m, edges[i])
 
 
 @kernel
