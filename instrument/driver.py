@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from . import counters, quality
+from . import counters, quality, reconstruct
 from .mesh import NO_EDGE, NO_SEG, S_NVERT, live_triangles
 from .output import Result, _col, _put, edge_ends, unique_edges
 from .pslg import Mesher, carve, clean_segments, enclose_hull, recover_segments, start
@@ -88,7 +88,14 @@ def _validate(tri: dict, o: Options) -> dict:
 
 
 def triangulate(
-    tri: dict, opts: str = "", *, strategy: str = "triangle", seed: int = 0, trace: bool = False, steiner: str = "offcenter"
+    tri: dict,
+    opts: str = "",
+    *,
+    strategy: str = "triangle",
+    seed: int = 0,
+    trace: bool = False,
+    steiner: str = "offcenter",
+    triunsuitable=None,
 ) -> Result:
     """Triangulate, mesh or refine ``tri`` (the `triangle` package's dict) under
     Triangle's switches ``opts`` (library rules: no dash, 0-based indices).
@@ -98,11 +105,16 @@ def triangulate(
     warnings (duplicate vertices, invalid segments).  ``strategy`` picks the
     next bad triangle (``instrument.strategies()``); ``steiner`` is
     "offcenter" (Triangle's) or "circumcenter" (Ruppert's original points).
+    ``triunsuitable(org, dest, apex, area) -> bool`` replaces Triangle's
+    built-in size test for the ``u`` switch (``u`` without it uses the
+    built-in one, as the `triangle` package does).
     """
     o = parse(opts)
     inp = _validate(tri, o)
-    if o.r or o.u:
-        raise NotImplementedError("refining an existing mesh (r) and the user test (u) are not implemented yet")
+    if o.r:  # refine the given triangles: reconstruct.py
+        return reconstruct.refine_existing(
+            tri, inp, o, strategy=strategy, seed=seed, trace=trace, steiner=steiner, triunsuitable=triunsuitable
+        )
     strategy_id(strategy)  # reject unknown names before any work
     work = counters.new_work()
     xy = inp["vertices"]
@@ -122,7 +134,7 @@ def triangulate(
         _mark_hull_vertices(ms)
     rows = None
     if o.quality and int(ms.m.size[3]) > 0:
-        rows = quality.run(ms, o, strategy=strategy, steiner=steiner, trace=trace)
+        rows = quality.run(ms, o, strategy=strategy, steiner=steiner, trace=trace, triunsuitable=triunsuitable)
     result = _assemble(ms, inp, o)
     if rows is not None:
         result.trace = rows

@@ -61,7 +61,7 @@ def _new_refiner(ms: Mesher, o: Options, strategy: str, steiner: str, trace: boo
         hseq=np.zeros(slots + 16, dtype=np.int64),
         htri=np.zeros(slots + 16, dtype=np.int64),
         hstamp=np.zeros(slots + 16, dtype=np.int64),
-        enc=np.zeros((3 * slots + 16, 4), dtype=np.int64),
+        enc=np.zeros((2 * int(ms.segs.size[cdt.R_NREC]) + 64, 4), dtype=np.int64),  # room for every subsegment
         cav=np.zeros(slots, dtype=np.int64),
         fan=np.zeros(slots, dtype=np.int64),
         seen=np.zeros(slots, dtype=np.int8),
@@ -73,24 +73,28 @@ def _new_refiner(ms: Mesher, o: Options, strategy: str, steiner: str, trace: boo
 
 
 def _grow(ms: Mesher, r: rf.Refiner) -> rf.Refiner:
-    """Double whatever the kernel may have run out of."""
-    m = ms.m
-    ms.grow(vertices=ms.n_vertices + 16, triangles=m.stamp.shape[0] + 64, records=ms.segs.marker.shape[0])
+    """Grow (doubling) whatever the kernel ran out of, and only that."""
+    need = max(64, int(r.ipar[rf.I_NEED]))
+    r.ipar[rf.I_NEED] = 0
+    ms.grow(vertices=16, triangles=need, records=16)
     slots = ms.m.stamp.shape[0]
     nvcap = ms.m.xy.shape[0]
-    heap = max(2 * r.hkey.shape[0], slots + 16)
-    enc = r.enc
-    if enc.shape[0] < 3 * slots + 16:  # a pool: slots keep their places
-        enc = _widen(enc, 2 * (3 * slots + 16), 0)
+    grown = {}
+    heap = r.hkey.shape[0]
+    if heap < int(r.ipar[rf.I_HSIZE]) + need or heap < slots + 16:
+        heap = max(2 * heap, slots + 16)
+        grown |= {k: _widen(getattr(r, k), heap, 0) for k in ("hkey", "hseq", "htri", "hstamp")}
+    enc = r.enc.shape[0]
+    if enc < int(r.ipar[rf.I_ELIVE]) + need:  # a pool: slots keep their places
+        grown["enc"] = _widen(r.enc, 2 * enc + need, 0)
     trace = r.trace
     if trace.shape[0] and r.ipar[rf.I_NTRACE] + 64 > trace.shape[0]:
-        trace = _widen(trace, 2 * trace.shape[0], 0)
+        grown["trace"] = _widen(trace, 2 * trace.shape[0], 0)
     per_vertex = {"vtype": 0, "vslot": -1}
     per_slot = {"area": -1.0, "attr": 0.0, "cav": 0, "fan": 0, "seen": 0, "bnd": 0, "bval": 0.0}
-    grown = {k: _widen(getattr(r, k), nvcap, fill) for k, fill in per_vertex.items()}
-    grown |= {k: _widen(getattr(r, k), slots, fill) for k, fill in per_slot.items()}
-    grown |= {k: _widen(getattr(r, k), heap, 0) for k in ("hkey", "hseq", "htri", "hstamp")}
-    return r._replace(enc=enc, trace=trace, **grown)
+    grown |= {k: _widen(getattr(r, k), nvcap, fill) for k, fill in per_vertex.items() if getattr(r, k).shape[0] < nvcap}
+    grown |= {k: _widen(getattr(r, k), slots, fill) for k, fill in per_slot.items() if getattr(r, k).shape[0] < slots}
+    return r._replace(**grown)
 
 
 def run(
@@ -116,33 +120,7 @@ def run(
     r = _new_refiner(ms, o, strategy, steiner, trace, user is not None)  # every vertex so far: V_INPUT (0)
     cdt.build_vertex_edges(ms.m, ms.vtri)
     rf.tally_encroached(r, ms.m, ms.segs)
-    judged = np.zeros(0, dtype=ms.m.stamp.dtype)  # the stamp each slot had when the callable judged it
-    while True:
-        status = rf.refine(r, ms.m, ms.segs, ms.vmark, ms.parent, ms.vtri, ms.work, ms.state)
-        if status == rf.DONE and user is not None and r.ipar[rf.I_BUDGET] != 0:
-            judged, bad = _judge(ms.m, user, judged)
-            while r.hkey.shape[0] < int(r.ipar[rf.I_HSIZE]) + bad.shape[0] + 16:
-                r = _grow(ms, r)
-            rf.queue_triangles(r, ms.m, ms.work, bad, ms.state)
-            if bad.shape[0]:
-                continue
-        if status == rf.DONE:
-            break
-        if status == rf.PRECISION:
-            a, b = int(r.ipar[rf.I_ERRV]), int(r.ipar[rf.I_ERRW])
-            xy = ms.m.xy
-            raise PrecisionError(
-                f"Ran out of precision at ({xy[a, 0]:.12g}, {xy[a, 1]:.12g}).\n"
-                f"I attempted to split a segment to a smaller size than\n"
-                f"  can be accommodated by the finite precision of\n"
-                f"  floating point arithmetic.\n"
-                f"  (segment ({xy[a, 0]:.12g}, {xy[a, 1]:.12g}) to ({xy[b, 0]:.12g}, {xy[b, 1]:.12g}))"
-            )
-        r = _grow(ms, r)
-    ms.region_area = r.area
-    if ms.region_attr is not None:
-        ms.region_attr = r.attr
-    ms.dead = np.flatnonzero(r.vtype[: ms.n_vertices] == rf.V_DEAD)
+    r = finish(ms, r, user)
     return _trace_table(r.trace[: int(r.ipar[rf.I_NTRACE])]) if trace else None
 
 
@@ -163,6 +141,43 @@ def _judge(m, user: Callable, judged: np.ndarray) -> tuple[np.ndarray, np.ndarra
         if user(o.copy(), d.copy(), a.copy(), area):
             bad.append(t)
     return judged, np.asarray(bad, dtype=np.int64)
+
+
+def finish(ms: Mesher, r: rf.Refiner, user: Callable | None = None) -> rf.Refiner:
+    """Run the refinement kernel to the end: grow its arrays when it asks,
+    let Python in when it pauses (Ctrl-C), consult ``user`` when it is done,
+    and turn a precision failure into Triangle's error.  Leaves the
+    per-triangle results on ``ms``; returns the final refiner."""
+    judged = np.zeros(0, dtype=ms.m.stamp.dtype)  # the stamp each slot had when the callable judged it
+    while True:
+        status = rf.refine(r, ms.m, ms.segs, ms.vmark, ms.parent, ms.vtri, ms.work, ms.state)
+        if status == rf.DONE and user is not None and r.ipar[rf.I_BUDGET] != 0:
+            judged, bad = _judge(ms.m, user, judged)
+            while r.hkey.shape[0] < int(r.ipar[rf.I_HSIZE]) + bad.shape[0] + 16:
+                r = _grow(ms, r)
+            rf.queue_triangles(r, ms.m, ms.work, bad, ms.state)
+            if bad.shape[0]:
+                continue
+        if status == rf.DONE:
+            break
+        if status == rf.PAUSE:  # back in Python now and then, so Ctrl-C works
+            continue
+        if status == rf.PRECISION:
+            a, b = int(r.ipar[rf.I_ERRV]), int(r.ipar[rf.I_ERRW])
+            xy = ms.m.xy
+            raise PrecisionError(
+                f"Ran out of precision at ({xy[a, 0]:.12g}, {xy[a, 1]:.12g}).\n"
+                f"I attempted to split a segment to a smaller size than\n"
+                f"  can be accommodated by the finite precision of\n"
+                f"  floating point arithmetic.\n"
+                f"  (segment ({xy[a, 0]:.12g}, {xy[a, 1]:.12g}) to ({xy[b, 0]:.12g}, {xy[b, 1]:.12g}))"
+            )
+        r = _grow(ms, r)
+    ms.region_area = r.area
+    if ms.region_attr is not None:
+        ms.region_attr = r.attr
+    ms.dead = np.flatnonzero(r.vtype[: ms.n_vertices] == rf.V_DEAD)
+    return r
 
 
 TRACE_DTYPE = np.dtype(

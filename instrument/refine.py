@@ -75,6 +75,9 @@ V_DEAD = 3  # a deleted free vertex (dropped from the output)
 DONE = 0
 NEED_ROOM = 1
 PRECISION = 2
+PAUSE = 3  # a slice of work is done: the driver may check for Ctrl-C and call again
+
+PAUSE_EVERY = 1 << 14  # bad triangles taken per slice
 
 # trace kinds
 T_SEGMENT, T_CIRCUMCENTER, T_OFFCENTER, T_REJECTED, T_DELETED = range(5)
@@ -101,7 +104,9 @@ I_CURSTAMP = 17  # and its stamp when it was queued
 I_USER = 18  # the -u size test: 0 off, 1 Triangle's built-in one (a Python one runs between calls)
 I_ELIVE = 19  # encroached pool: live records
 I_EFREE = 20  # encroached pool: last freed slot, -1 none (freed slots chain through column 1)
-I_NPAR = 21
+I_SLICE = 21  # bad triangles taken since the last PAUSE
+I_NEED = 22  # with NEED_ROOM: the triangles (and queue entries) one step needs
+I_NPAR = 23
 
 P_GOODANGLE = 0  # cos^2 of the minimum angle
 P_LENS = 1  # (2 cos^2 - 1)^2: the lens test
@@ -571,13 +576,17 @@ def _fill_cavity(r, m, work, vtri, p, n, nb):
 
 @kernel
 def _room(r, m, nb):
-    """Enough room to add a vertex and ``nb`` triangles and queue them?"""
-    return (
+    """Enough room to add a vertex and ``nb`` triangles and queue them?  If
+    not, says how much is needed (``I_NEED``) for the driver."""
+    ok = (
         m.size[S_NVERT] < m.xy.shape[0]
         and spare_triangles(m) >= nb + 2
         and r.ipar[I_HSIZE] + nb + 2 <= r.hkey.shape[0]
         and _enc_len(r) + nb + 4 <= r.enc.shape[0]
     )
+    if not ok:
+        r.ipar[I_NEED] = max(r.ipar[I_NEED], nb + 4)
+    return ok
 
 
 @kernel
@@ -990,7 +999,7 @@ def _tally(r, m, edges):
 @kernel
 def refine(r, m, segs, vmark, parent, vtri, work, state):
     """Triangle's refinement loop, resumable: returns DONE, NEED_ROOM (grow the
-    arrays and call again) or PRECISION."""
+    arrays and call again), PAUSE (call again) or PRECISION."""
     while True:
         if r.ipar[I_PHASE] == 0:  # encroached subsegments of the input
             status = split_encroached(r, m, segs, vmark, parent, vtri, work, 0, state)
@@ -1027,6 +1036,10 @@ def refine(r, m, segs, vmark, parent, vtri, work, state):
                 return status
         if r.ipar[I_HSIZE] == 0 or r.ipar[I_BUDGET] == 0:
             return DONE
+        if r.ipar[I_SLICE] >= PAUSE_EVERY:
+            r.ipar[I_SLICE] = 0
+            return PAUSE
+        r.ipar[I_SLICE] += 1
         i = heap_pop(r)
         t = r.htri[i]
         work[C_QUEUE_POP] += 1

@@ -312,6 +312,11 @@ def _run(argv: list[str], out: TextIO) -> int:
     data, info = _read_input(o, base)
     for path in info.files:
         say(f"Opening {path}.")
+    if o.r:  # reconstruction: an invalid segment is an error, not a warning
+        for line in info.warnings:
+            hit = re.search(r"Invalid (?:first|second) endpoint of segment (\d+)", line)
+            if hit:
+                raise CliError(f"Segment {hit.group(1)} has an invalid vertex index.")
     for line in info.warnings:
         warn(line)
     nvertices = len(np.asarray(data.get("vertices", np.zeros((0, 2)))).reshape(-1, 2))
@@ -326,6 +331,9 @@ def _run(argv: list[str], out: TextIO) -> int:
     _phase_lines(o, say, ntriangles)
     if not o.r:
         for line in _duplicate_warnings(data["vertices"]):
+            warn(line)
+    else:  # segments that are not edges of the mesh, or end off it
+        for line in getattr(result, "warnings", None) or []:
             warn(line)
     say()
 
@@ -508,6 +516,8 @@ def _output_mesh(result, data, o) -> dict[str, Any]:
         for key in ("holes", "regions"):
             if key not in mesh and data.get(key) is not None and np.size(data[key]):
                 mesh[key] = data[key]
+    if o.r:
+        mesh.pop("regions", None)  # Triangle does not read them when refining
     if o.B:
         for key in ("vertex_markers", "segment_markers", "edge_markers"):
             mesh.pop(key, None)

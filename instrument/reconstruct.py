@@ -1,0 +1,526 @@
+"""Refining a mesh given as triangles (Triangle's ``-r``).
+
+The given triangulation is kept as it is: the mesh is built from the
+triangles themselves, not re-triangulated, so a quad with four cocircular
+corners keeps its diagonal.  Steps:
+
+1. Check the triangles (indices in range, three distinct corners, strictly
+   counter-clockwise by the exact predicate) and link neighbours by matching
+   each directed edge with its reverse.  Edges are bucketed by origin with a
+   counting sort, so linking is linear in the number of triangles.  An edge
+   used twice in the same direction (a triangle given twice, or two triangles
+   on the same side of an edge) or by more than two triangles is an error,
+   and so is a fold: triangles that wind around one of their vertices more
+   than once.  Overlaps between triangles that share no vertex are not
+   detected (Triangle assumes a valid mesh and checks nothing).
+2. The extra nodes of six-node triangles are dropped from the vertex set, as
+   Triangle deletes them; the other vertices keep their order.  Vertices that
+   no triangle uses stay (Triangle writes them too).
+3. With ``p``: segments that are edges of the mesh become subsegments, in
+   input order.  A segment that is not an edge is inserted with the segment
+   recovery of cdt.py if it lies in the mesh, and ignored if it crosses the
+   boundary or a hole; both get a warning (Triangle silently keeps such a
+   segment out of the mesh but lists it in its output).  An invalid index
+   is an error, as in Triangle.  Holes and regions are not carved or
+   spread: Triangle ignores them with ``-r`` (they are echoed, as the
+   `triangle` package does).
+4. Every edge with one triangle becomes a subsegment with marker 1 (if it
+   is not one already), and its endpoints get marker 1 if theirs is 0.
+5. Before refinement only: non-constrained edges that are not locally
+   Delaunay are flipped.  The refiner inserts vertices by Bowyer-Watson
+   cavities, which are only star-shaped in a constrained Delaunay mesh; a
+   mesh Triangle made is one already, and then nothing changes (cocircular
+   quads are not flipped).
+
+Triangle attributes travel with the refiner's per-triangle value, which new
+triangles copy from the triangle they replace: it carries the index of the
+input triangle each one descends from, and the attribute rows are looked up
+at the end.  Per-triangle area bounds (``triangle_max_area`` with a bare
+``a``; <= 0 means none) are the refiner's per-triangle bounds.  Triangle
+averages both over the flips of an insertion; the cavity insertion copies
+instead.  ``j`` keeps unused input vertices: Triangle jettisons only undead
+ones, which reconstruction never makes.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+
+from . import cdt, counters, quality
+from .counters import C_CREATED
+from .insert import flip, should_flip
+from .jit import kernel
+from .mesh import (
+    NO_EDGE,
+    NO_SEG,
+    S_NLIVE,
+    S_NSLOT,
+    S_NVERT,
+    live_triangles,
+    lnext,
+    lprev,
+    new_mesh,
+)
+from .output import Result, _put
+from .predicates import orient2d
+from .pslg import Mesher, enclose_hull, recover_segments
+from .strategies import strategy_id
+from .switches import Options
+
+# _link status codes; bad[1:] say where
+LINK_OK = 0
+REPEATED_CORNER = 1  # bad = (code, triangle)
+COLLINEAR = 2  # (code, triangle)
+CLOCKWISE = 3  # (code, triangle)
+SAME_SIDE = 4  # (code, triangle, other triangle): a directed edge used twice
+GIVEN_TWICE = 5  # (code, triangle, other triangle)
+THREE_SIDES = 6  # (code, triangle, org, dest): an edge in more than two triangles
+FOLDED = 7  # (code, vertex)
+
+
+# ---------------------------------------------------------------- kernels
+
+
+@kernel
+def _lower(dx, dy):
+    """The direction (dx, dy) has its angle in [pi, 2 pi)."""
+    return dy < 0.0 or (dy == 0.0 and dx < 0.0)
+
+
+@kernel
+def _link(corner, xy, start, count, order, dst, twin, bad):
+    """Check the triangles ``corner`` (3 per triangle) and fill ``twin``.
+
+    ``start`` (V + 1), ``count`` (V), ``order`` and ``dst`` (3T) are scratch:
+    on success ``order[start[v]:start[v + 1]]`` lists the edges whose origin
+    is ``v`` and ``dst`` their destinations (side by side, so that searching
+    a vertex's edges reads one run of memory).  Returns a status code;
+    ``bad`` says where the first problem is.
+    """
+    ne = corner.shape[0]
+    nv = count.shape[0]
+    for t in range(ne // 3):
+        a, b, c = corner[3 * t], corner[3 * t + 1], corner[3 * t + 2]
+        if a == b or b == c or c == a:
+            bad[1] = t
+            return REPEATED_CORNER
+        s = orient2d(xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[c, 0], xy[c, 1])
+        if s <= 0.0:
+            bad[1] = t
+            return COLLINEAR if s == 0.0 else CLOCKWISE
+    # counting sort of the edges by origin
+    for v in range(nv + 1):
+        start[v] = 0
+    for e in range(ne):
+        start[corner[lnext(e)] + 1] += 1
+    for v in range(nv):
+        start[v + 1] += start[v]
+        count[v] = start[v]
+    for e in range(ne):
+        o = corner[lnext(e)]
+        order[count[o]] = e
+        dst[count[o]] = corner[lprev(e)]
+        count[o] += 1
+    for o in range(nv):  # bucket by bucket: the runs of o and d are all we read
+        for j in range(start[o], start[o + 1]):
+            e = order[j]
+            d = dst[j]
+            same = -1
+            for i in range(j + 1, start[o + 1]):
+                if dst[i] == d:
+                    same = order[i]
+            if same < 0 and o > d:
+                continue  # linked (or left on the boundary) from d's run
+            tw = NO_EDGE
+            back = 0
+            for i in range(start[d], start[d + 1]):
+                if dst[i] == o:
+                    back += 1
+                    tw = order[i]
+            if same >= 0 or back > 1:
+                bad[1] = e // 3
+                if same >= 0 and back == 0:
+                    bad[2] = same // 3
+                    return GIVEN_TWICE if corner[same] == corner[e] else SAME_SIDE
+                bad[2] = o
+                bad[3] = d
+                return THREE_SIDES
+            twin[e] = tw
+            if tw != NO_EDGE:
+                twin[tw] = e
+    # A fan of counter-clockwise triangles turns around its vertex once at
+    # most; count how often the fans pass the direction of angle 0.
+    for v in range(nv):
+        count[v] = 0
+    for e in range(ne):
+        v = corner[e]
+        a = corner[lnext(e)]
+        b = corner[lprev(e)]
+        if _lower(xy[a, 0] - xy[v, 0], xy[a, 1] - xy[v, 1]) and not _lower(xy[b, 0] - xy[v, 0], xy[b, 1] - xy[v, 1]):
+            count[v] += 1
+            if count[v] > 1:
+                bad[1] = v
+                return FOLDED
+    return LINK_OK
+
+
+@kernel
+def _attach(m, segs, vmark, start, order, rows, in_marker, unmatched):
+    """Make each segment ``rows[i] = (a, b, index)`` that is an edge a
+    subsegment, in input order; list the row numbers of the others in
+    ``unmatched`` and return how many.  Endpoints of the others take their
+    marker here too, so that the first segment in input order wins."""
+    n = 0
+    for i in range(rows.shape[0]):
+        a, b, s = rows[i, 0], rows[i, 1], rows[i, 2]
+        e = NO_EDGE
+        for j in range(start[a], start[a + 1]):
+            if m.corner[lprev(order[j])] == b:
+                e = order[j]
+        for j in range(start[b], start[b + 1]):
+            if m.corner[lprev(order[j])] == a:
+                e = order[j]
+        if e != NO_EDGE:
+            cdt.mark_subsegment(m, segs, vmark, e, in_marker[s], s)
+        else:
+            unmatched[n] = i
+            n += 1
+            mk = in_marker[s]
+            if vmark[a] == 0:
+                vmark[a] = mk
+            if vmark[b] == 0:
+                vmark[b] = mk
+    return n
+
+
+@kernel
+def _leaves_mesh(m, scratch_work, vtri, a, b, state):
+    """True if the segment ``a -> b`` does not lie in the mesh (it crosses the
+    boundary or a hole).  Walks along it as segment recovery does, through
+    vertices exactly on it; ``scratch_work`` keeps the counters clean."""
+    xy = m.xy
+    v = a
+    for _ in range(m.size[S_NVERT] + 1):
+        if v == b:
+            return False
+        e0 = cdt._find_vertex(m, scratch_work, vtri, v, state)
+        if e0 < 0:
+            return True
+        e, where = cdt._turn_to(m, scratch_work, v, b, e0)
+        if e < 0:
+            return True  # the ray leaves v outside its triangles
+        if where == 1:
+            v = m.corner[lprev(e)]
+            continue
+        if where == 2:
+            v = m.corner[e]
+            continue
+        c = lnext(e)  # the edge the segment crosses next
+        vx, vy, bx, by = xy[v, 0], xy[v, 1], xy[b, 0], xy[b, 1]
+        for _ in range(m.size[S_NSLOT] + 1):
+            tw = m.twin[c]
+            if tw == NO_EDGE:
+                return True
+            y = m.corner[tw]
+            if y == b:
+                return False
+            s = orient2d(vx, vy, bx, by, xy[y, 0], xy[y, 1])
+            if s > 0.0:
+                c = lnext(tw)
+            elif s < 0.0:
+                c = lprev(tw)
+            else:  # a vertex exactly on the segment: go on from there
+                v = y
+                break
+    return True
+
+
+@kernel
+def _make_delaunay(m, work, stack, queued):
+    """Flip every non-constrained edge that is not locally Delaunay (Lawson).
+
+    ``stack`` and ``queued`` have one entry per edge slot; each edge is on the
+    stack at most once.  Returns the number of flips."""
+    n = 0
+    for t in range(m.size[S_NSLOT]):
+        if m.stamp[t] > 0:
+            for k in range(3):
+                e = 3 * t + k
+                tw = m.twin[e]
+                if tw > e and m.seg[e] == NO_SEG:  # each interior edge once
+                    stack[n] = e
+                    queued[e] = 1
+                    n += 1
+    flips = 0
+    while n > 0:
+        n -= 1
+        e = stack[n]
+        queued[e] = 0
+        if m.stamp[e // 3] <= 0 or not should_flip(m, work, e):
+            continue
+        t1 = flip(m, work, e)
+        flips += 1
+        t2 = m.twin[3 * t1 + 1] // 3
+        # the four sides of the flipped quad (the new diagonal is fine)
+        for f in (3 * t1, 3 * t1 + 2, 3 * t2, 3 * t2 + 1):
+            if not queued[f] and m.twin[f] != NO_EDGE and m.seg[f] == NO_SEG:
+                queued[f] = 1
+                stack[n] = f
+                n += 1
+    return flips
+
+
+@kernel
+def _spread_origin(m, origin):
+    """Give each live triangle without an origin (made by segment insertion)
+    that of a neighbour, preferring one not across a subsegment.  Returns how
+    many are still without one."""
+    left = 1
+    changed = True
+    while left > 0 and changed:
+        left = 0
+        changed = False
+        for t in range(m.size[S_NSLOT]):
+            if m.stamp[t] <= 0 or origin[t] >= 0:
+                continue
+            best = -1
+            for k in range(3):
+                tw = m.twin[3 * t + k]
+                if tw != NO_EDGE and origin[tw // 3] >= 0 and (best < 0 or m.seg[3 * t + k] == NO_SEG):
+                    best = origin[tw // 3]
+            if best >= 0:
+                origin[t] = best
+                changed = True
+            else:
+                left += 1
+    return left
+
+
+# ---------------------------------------------------------------- driver side
+
+
+_PROBLEMS = {
+    REPEATED_CORNER: "triangle {0} uses the same vertex twice",
+    COLLINEAR: "triangle {0} is degenerate: its corners are collinear",
+    CLOCKWISE: "triangle {0} is clockwise; list the corners of every triangle counter-clockwise",
+    SAME_SIDE: "triangles {0} and {1} overlap: they lie on the same side of a shared edge",
+    GIVEN_TWICE: "triangle {1} repeats triangle {0}",
+    THREE_SIDES: "the edge between vertices {1} and {2} is shared by more than two triangles (one is triangle {0})",
+    FOLDED: "the triangles around vertex {0} overlap: they wind around it more than once",
+}
+
+
+def _triangles(tri: dict, n: int) -> np.ndarray:
+    """The ``triangles`` key as an (M, k >= 3) int64 array with indices in range."""
+    if tri.get("triangles") is None:
+        raise ValueError("refining (r) needs the mesh's 'triangles'")
+    raw = np.asarray(tri["triangles"])
+    if raw.size == 0:
+        return np.zeros((0, 3), dtype=np.int64)
+    if raw.ndim != 2 or raw.shape[1] < 3:
+        raise ValueError(f"triangles must have shape (M, 3) or (M, 6), not {raw.shape}")
+    if raw.dtype.kind not in "iu" and (raw.dtype.kind != "f" or not np.array_equal(raw, np.round(raw))):
+        raise ValueError("triangles must hold integer vertex indices")
+    t = raw.astype(np.int64)
+    out = (t < 0) | (t >= n)
+    if out.any():
+        i, j = np.argwhere(out)[0]
+        raise ValueError(f"triangle {i} has an invalid vertex index {t[i, j]} (there are {n} vertices)")
+    return t
+
+
+def _per_triangle(tri: dict, key: str, m: int) -> np.ndarray | None:
+    if tri.get(key) is None or np.size(tri[key]) == 0:
+        return None
+    a = np.asarray(tri[key], dtype=np.float64)
+    a = a.reshape(a.shape[0], -1) if a.ndim else a.reshape(1, 1)
+    if a.shape[0] != m:
+        raise ValueError(f"{key} has {a.shape[0]} rows for {m} triangles")
+    return np.ascontiguousarray(a)
+
+
+def _drop_extra_nodes(t: np.ndarray, inp: dict) -> tuple[np.ndarray, dict, np.ndarray]:
+    """Remove the extra nodes of higher-order triangles from the vertex set
+    (unless some triangle uses one as a corner).  Returns the corners, the
+    input with the vertex rows compacted, and the map old -> new id (-1 for
+    removed ones)."""
+    n = inp["vertices"].shape[0]
+    new_id = np.arange(n, dtype=np.int64)
+    corners = t[:, :3]
+    if t.shape[1] == 3:
+        return corners, inp, new_id
+    keep = np.ones(n, dtype=bool)
+    keep[t[:, 3:].ravel()] = False
+    keep[corners.ravel()] = True
+    if keep.all():
+        return corners, inp, new_id
+    new_id = np.where(keep, np.cumsum(keep) - 1, -1)
+    inp = dict(inp)
+    for key in ("vertices", "vertex_markers", "vertex_attributes"):
+        if key in inp:
+            inp[key] = np.ascontiguousarray(inp[key][keep])
+    return new_id[corners], inp, new_id
+
+
+def _check_and_link(corners: np.ndarray, xy: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Run ``_link``; returns (twin, start, order) or raises ValueError."""
+    nv = xy.shape[0]
+    flat = np.ascontiguousarray(corners.ravel(), dtype=np.int32)
+    start = np.zeros(nv + 1, dtype=np.int64)
+    order = np.zeros(flat.shape[0], dtype=np.int64)
+    dst = np.zeros(flat.shape[0], dtype=np.int32)
+    twin = np.full(flat.shape[0], NO_EDGE, dtype=np.int32)
+    bad = np.zeros(4, dtype=np.int64)
+    status = _link(flat, xy, start, np.zeros(nv, dtype=np.int64), order, dst, twin, bad)
+    if status != LINK_OK:
+        raise ValueError("cannot refine: " + _PROBLEMS[status].format(*bad[1:].tolist()))
+    return twin, start, order
+
+
+def reconstruct(tri: dict, inp: dict, o: Options, work: np.ndarray, seed: int = 0) -> tuple[Mesher, dict, np.ndarray | None]:
+    """Build the Mesher for ``-r`` from ``tri['triangles']`` (steps 1-4 above).
+
+    ``inp`` is the driver's validated input.  Returns the Mesher, the input
+    with the vertex rows that remain, and the triangle attributes (M, k) or
+    None.  With attributes, ``ms.region_attr`` holds for each triangle slot
+    the input triangle it descends from.
+    """
+    t = _triangles(tri, inp["vertices"].shape[0])
+    attrs = _per_triangle(tri, "triangle_attributes", t.shape[0])
+    bounds = _per_triangle(tri, "triangle_max_area", t.shape[0]) if o.var_area else None
+    corners, inp, new_id = _drop_extra_nodes(t, inp)
+    xy_in = inp["vertices"]
+    n, nt = xy_in.shape[0], corners.shape[0]
+    twin, start, order = _check_and_link(corners, xy_in)
+
+    nseg = inp["segments"].shape[0] if o.p else 0
+    spare = 2 * nseg + 16
+    xy = np.zeros((n + spare, 2))
+    xy[:n] = xy_in
+    m = new_mesh(xy, nt + 2 * spare)
+    m.size[S_NVERT] = n
+    m.corner[: 3 * nt] = corners.ravel()
+    m.twin[: 3 * nt] = twin
+    m.stamp[:nt] = 1
+    m.size[S_NSLOT] = nt
+    m.size[S_NLIVE] = nt
+    work[C_CREATED] += nt  # every triangle that appears in the mesh is counted
+    cap = n + spare
+    vmark = np.zeros(cap, dtype=np.int32)
+    vmark[:n] = inp["vertex_markers"]
+    nboundary = int(np.count_nonzero(twin == NO_EDGE))
+    ms = Mesher(
+        m=m,
+        work=work,
+        n_input=n,
+        dup=np.full(n, -1, dtype=np.int64),
+        vmark=vmark,
+        parent=np.full((cap, 5), -1.0),
+        segs=cdt.new_segs(nseg + nboundary + 16),
+        vtri=np.full(cap, -1, dtype=np.int64),
+        state=np.array([seed * 2654435761 + 12345], dtype=np.int64),
+        n_triangles_initial=nt,
+    )
+    inserted = False
+    if o.p and nseg:
+        inserted = _segments(ms, inp, new_id, corners, start, order)
+    enclose_hull(ms)  # every boundary edge is a subsegment
+    origin = None
+    if attrs is not None or bounds is not None:
+        origin = np.full(ms.m.stamp.shape[0], -1, dtype=np.int64)
+        origin[:nt] = np.arange(nt)
+        if inserted:  # triangles made by segment insertion: a neighbour's
+            origin[nt:] = -1
+            if _spread_origin(ms.m, origin):
+                origin[origin < 0] = 0  # a component made entirely anew
+    if bounds is not None:
+        b = bounds[:, 0]
+        area = np.where(b > 0, b, -1.0)
+        ms.region_area = np.where(origin >= 0, area[np.maximum(origin, 0)], -1.0)
+    if attrs is not None:
+        ms.region_attr = origin.astype(np.float64)  # copied to descendants
+    return ms, inp, attrs
+
+
+def _segments(ms: Mesher, inp: dict, new_id: np.ndarray, corners: np.ndarray, start, order) -> bool:
+    """Attach the input segments (step 3); True if some had to be inserted."""
+    seg = inp["segments"]
+    n_old = new_id.shape[0]
+    out = (seg < 0) | (seg >= n_old)
+    if out.any():
+        i = int(np.flatnonzero(out.any(axis=1))[0])
+        raise ValueError(f"Segment {i} has an invalid vertex index.")
+    seg = new_id[seg]
+    used = np.zeros(inp["vertices"].shape[0] + 1, dtype=bool)
+    used[corners.ravel()] = True
+    unused = ~used[seg].all(axis=1)  # new_id -1 reads the last, always False
+    for i in np.flatnonzero(unused):
+        ms.warnings.append(f"Warning:  Segment {i} has an endpoint that is in no triangle; it was ignored.")
+    seg = np.maximum(seg, 0)
+    xy = inp["vertices"]
+    coincident = ~unused & (xy[seg[:, 0]] == xy[seg[:, 1]]).all(axis=1)
+    for i in np.flatnonzero(coincident):
+        ms.warnings.append(f"Warning:  Endpoints of segment {i} are coincident in input.")
+    keep = ~(unused | coincident)
+    rows = np.ascontiguousarray(np.c_[seg[keep], np.flatnonzero(keep)], dtype=np.int64)
+    markers = np.ascontiguousarray(inp["segment_markers"], dtype=np.int32)
+    unmatched = np.zeros(rows.shape[0], dtype=np.int64)
+    k = _attach(ms.m, ms.segs, ms.vmark, start, order, rows, markers, unmatched)
+    if k == 0:
+        return False
+    cdt.build_vertex_edges(ms.m, ms.vtri)
+    scratch = counters.new_work()
+    insert = []
+    for i in unmatched[:k]:
+        a, b, s = rows[i]
+        if _leaves_mesh(ms.m, scratch, ms.vtri, a, b, ms.state):
+            ms.warnings.append(f"Warning:  Segment {s} does not lie in the mesh; it was ignored.")
+        else:
+            ms.warnings.append(f"Warning:  Segment {s} is not an edge of the mesh; it was inserted.")
+            insert.append(i)
+    if not insert:
+        return False
+    recover_segments(ms, np.ascontiguousarray(rows[insert]), markers)
+    return True
+
+
+def make_delaunay(ms: Mesher) -> int:
+    """Step 5: flip the mesh to a constrained Delaunay one; returns the flips."""
+    slots = ms.m.stamp.shape[0]
+    return int(_make_delaunay(ms.m, ms.work, np.zeros(3 * slots, dtype=np.int64), np.zeros(3 * slots, dtype=np.uint8)))
+
+
+def refine_existing(
+    tri: dict,
+    inp: dict,
+    o: Options,
+    *,
+    strategy: str = "triangle",
+    seed: int = 0,
+    trace: bool = False,
+    steiner: str = "offcenter",
+    triunsuitable=None,
+) -> Result:
+    """``triangulate`` with ``r``: reconstruct, refine if asked, assemble."""
+    from .driver import _assemble  # the driver imports this module
+
+    strategy_id(strategy)  # reject unknown names before any work
+    work = counters.new_work()
+    ms, inp, attrs = reconstruct(tri, inp, o, work, seed)
+    rows = None
+    if o.quality and int(ms.m.size[S_NLIVE]) > 0:
+        make_delaunay(ms)
+        rows = quality.run(ms, o, strategy=strategy, steiner=steiner, trace=trace, triunsuitable=triunsuitable)
+    # -j leaves out only undead vertices (duplicates, eaten ones), which
+    # reconstruction never makes: unused input vertices stay, as in Triangle
+    result = _assemble(ms, inp, dataclasses.replace(o, j=False))
+    if attrs is not None and not o.E and "triangles" in result:
+        anc = ms.region_attr[live_triangles(ms.m)].astype(np.int64)
+        _put(result, "triangle_attributes", attrs[anc])
+    if rows is not None:
+        result.trace = rows
+    result.work = counters.as_dict(work)
+    result.warnings = ms.warnings
+    return result
