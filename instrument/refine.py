@@ -21,6 +21,7 @@ array is full and resume after the driver grows it.
 
 from __future__ import annotations
 
+import math
 from typing import NamedTuple
 
 import numpy as np
@@ -414,7 +415,7 @@ def queue_triangles(r, m, work, ts, state):
     for i in range(ts.shape[0]):
         t = ts[i]
         if m.stamp[t] > 0:
-            mn, cos2, area2, circ2, u, v = _shape(xy, m.corner[3 * t], m.corner[3 * t + 1], m.corner[3 * t + 2])
+            mn, cos2, _, circ2, _, _ = _shape(xy, m.corner[3 * t], m.corner[3 * t + 1], m.corner[3 * t + 2])
             _queue(r, m, work, t, mn, cos2, circ2, state)
 
 
@@ -531,7 +532,7 @@ def _unsee(r, n):
 def _would_create(r, m, work, t):
     """Triangles a split of ``t`` would create (the adversary's greed)."""
     px, py, _, _, _ = steiner_point(r, m, t)
-    if not (px == px and py == py):
+    if math.isnan(px) or math.isnan(py):
         return 0
     n, nb = _cavity(r, m, work, px, py, t, -1, -1)
     _unsee(r, n)
@@ -835,7 +836,7 @@ def split_subsegment(r, m, segs, vmark, parent, vtri, work, e, triflaws, state):
     # one correction toward the segment's line
     den = ex * ex + ey * ey
     mult = orient2d(xy[o, 0], xy[o, 1], xy[d, 0], xy[d, 1], px, py) / den
-    if mult != 0.0 and den != 0.0 and mult == mult:
+    if mult != 0.0 and den != 0.0 and not math.isnan(mult):
         px += mult * ey
         py += mult * -ex
     if (px == xy[o, 0] and py == xy[o, 1]) or (px == xy[d, 0] and py == xy[d, 1]):
@@ -916,7 +917,7 @@ def split_bad_triangle(r, m, segs, vmark, parent, vtri, work, t, state):
     px, py, xi, eta, off = steiner_point(r, m, t)
     work[C_CIRCUMCENTER] += 1
     a, b, c = m.corner[3 * t], m.corner[3 * t + 1], m.corner[3 * t + 2]
-    if not (px == px and py == py) or (px == xy[a, 0] and py == xy[a, 1]) or (px == xy[b, 0] and py == xy[b, 1]) or (
+    if math.isnan(px) or math.isnan(py) or (px == xy[a, 0] and py == xy[a, 1]) or (px == xy[b, 0] and py == xy[b, 1]) or (
         px == xy[c, 0] and py == xy[c, 1]
     ):
         work[C_DUPLICATE] += 1
@@ -947,10 +948,9 @@ def split_bad_triangle(r, m, segs, vmark, parent, vtri, work, t, state):
     xy = m.xy
     encroached = 0
     for j in range(nb):
-        if r.bnd[j, 3] != NO_SEG:
-            if _in_lens(r, xy, r.bnd[j, 1], r.bnd[j, 2], px, py):
-                encroached += 1
-                _queue_side(r, m, r.bnd[j, 4], True)
+        if r.bnd[j, 3] != NO_SEG and _in_lens(r, xy, r.bnd[j, 1], r.bnd[j, 2], px, py):
+            encroached += 1
+            _queue_side(r, m, r.bnd[j, 4], True)
     if encroached:
         _unsee(r, n)
         work[C_REJECTED] += 1
