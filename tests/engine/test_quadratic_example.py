@@ -109,7 +109,7 @@ def with_steiner_points(n: int, k: int, alpha: float) -> dict:
 # --------------------------------------------------------------------------
 
 
-@pytest.mark.parametrize("alpha", ALPHAS + [1.0, 0.25, 19.99])
+@pytest.mark.parametrize("alpha", ALPHAS + [1.0, 0.25, 19.99, 30.0, 33.0])
 @pytest.mark.parametrize("n", [31, 100, 1000])
 def test_params_are_equations_3_to_5(alpha, n):
     r = paper_r(alpha)
@@ -452,10 +452,19 @@ def test_non_integer_n_is_rejected(n):
         quadratic.example(n)
 
 
-@pytest.mark.parametrize("alpha", [0.0, -1.0, 20.5, 45.0, float("nan"), float("inf")])
+@pytest.mark.parametrize("alpha", [0.0, -1.0, 34.5, 45.0, float("nan"), float("inf")])
 def test_alpha_outside_the_range_is_rejected(alpha):
-    with pytest.raises(ValueError, match="0 < alpha_deg <= 20"):
+    with pytest.raises(ValueError, match="0 < alpha_deg <= 34"):
         quadratic.example(10, alpha)
+
+
+@pytest.mark.parametrize(("alpha", "r"), [(20.5, 2), (30.0, 2), (30.01, 1), (33.0, 1), (34.0, 1)])
+def test_angles_above_20_degrees_for_the_sweep(alpha, r):
+    # the construction needs only alpha > 0; at exactly 30 degrees r = 1 would
+    # give theta = 30 degrees (tan^2 = 1/3 exactly, also in floating point)
+    assert quadratic.smallest_r(alpha) == paper_r(alpha) == r
+    p = quadratic.params(40, alpha)
+    assert p.theta_deg < alpha
 
 
 @pytest.mark.parametrize("alpha", ["20", None, True])
