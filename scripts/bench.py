@@ -716,23 +716,24 @@ def notes(rows) -> list[str]:
 
 
 def provenance() -> tuple[str, str]:
-    """(the commit measured, with a fingerprint of uncommitted changes to the
-    engine and file packages; a fingerprint of the code itself), read-only git."""
+    """(the commit measured, noting uncommitted changes to the engine and file
+    packages; a fingerprint of their source files as they are on disk, to
+    notice a change during the run)."""
     import hashlib
 
-    def git(*args: str) -> str:
-        return subprocess.run(["git", *args], cwd=ROOT, capture_output=True, text=True, check=True).stdout
-
+    h = hashlib.sha1()
+    for path in sorted(p for d in ("instrument", "ruppert_io") for p in (ROOT / d).rglob("*.py")):
+        h.update(str(path.relative_to(ROOT)).encode() + b"\0" + path.read_bytes())
+    code = h.hexdigest()[:8]
     try:
+        def git(*args: str) -> str:
+            return subprocess.run(["git", *args], cwd=ROOT, capture_output=True, text=True, check=True).stdout
+
         head = git("rev-parse", "--short", "HEAD").strip()
-        trees = git("rev-parse", "HEAD:instrument", "HEAD:ruppert_io")
-        diff = git("diff", "HEAD", "--", "instrument", "ruppert_io")
+        dirty = git("status", "--porcelain", "--", "instrument", "ruppert_io").strip()
     except (OSError, subprocess.CalledProcessError):
-        return "unknown commit", ""
-    code = hashlib.sha1((trees + diff).encode()).hexdigest()[:8]
-    if not diff:
-        return f"commit {head}", code
-    return f"commit {head} with uncommitted engine changes (diff {hashlib.sha1(diff.encode()).hexdigest()[:8]})", code
+        return f"unknown commit, source {code}", code
+    return f"commit {head}" + (f" with uncommitted engine changes (source {code})" if dirty else ""), code
 
 
 LEGEND = (
