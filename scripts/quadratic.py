@@ -470,6 +470,40 @@ def sweep_table(rows, alphas) -> str:
     return md_table(header, body)
 
 
+def largest_table(rows, alpha, strategies, sl) -> tuple[int | None, str]:
+    """Every engine at the largest n Triangle finished: size, work, time, slope."""
+    done = [r["n"] for r in rows if r["alpha"] == alpha and r["engine"] == "triangle" and r["status"] == "ok"]
+    if not done:
+        done = [r["n"] for r in rows if r["alpha"] == alpha and r["engine"] == "ours" and r["status"] == "ok"]
+    if not done:
+        return None, ""
+    n = max(done)
+    slope_of = {(x["engine"], x["strategy"], x["measure"]): x for x in sl if x["alpha"] == alpha}
+    tri = find(rows, alpha=alpha, n=n, engine="triangle", status="ok")
+    cols = [("triangle", "", "Triangle 1.6", "incircle_tests"), ("cgal", "", "CGAL Mesh_2", None)]
+    cols += [("ours", s, f"ours, {s}", "triangles_created") for s in strategies]
+    body = []
+    for engine, strategy, label, measure in cols:
+        r = find(rows, alpha=alpha, n=n, engine=engine, strategy=strategy)
+        fit = slope_of.get((engine, strategy, measure)) if measure else None
+        slope = f"{fit['slope']:.2f} ({'incircle tests' if engine == 'triangle' else 'created'}, n ≤ {fit['n_max']:,})" if fit else "—"
+        if r is None:
+            continue
+        if r["status"] != "ok":
+            stopped = [x for x in rows if x["alpha"] == alpha and x["engine"] == engine and x["strategy"] == strategy
+                       and x["status"] not in ("ok", "skipped")]
+            why = f"{stopped[0]['status']} at n = {stopped[0]['n']:,}" if stopped else r["status"]
+            body.append([label, why] + ["—"] * 7 + [slope])
+            continue
+        ratio = f"{r['wall_s'] / tri['wall_s']:.3f}" if tri and r.get("wall_s") else "—"
+        body.append([label, num(r["vertices"]), num(r["triangles"]), num(r.get("triangles_created")),
+                     num(r.get("incircle_tests")), num(r.get("orient_tests")), f"{r.get('script_points', 0):,}",
+                     secs(r.get("wall_s")), ratio, slope])
+    header = ["engine", "vertices", "triangles", "triangles created", "incircle tests", "orientation tests",
+              "P_k in output", "time (s)", "time / Triangle's", "log-log slope"]
+    return n, md_table(header, body)
+
+
 def delta_point(alpha: float) -> str:
     """Which point Triangle's rule (spec 4.8.5) takes for Δ_k: its circumcenter, at
     distance h = sqrt(4r²-1)/(2n) from the middle of CD, or the off-center, at
@@ -749,10 +783,13 @@ def findings(rows, alpha, best, then) -> list[str]:
     tri = sorted((r for r in rows if r["alpha"] == alpha and r["engine"] == "triangle" and r["status"] == "ok"), key=lambda r: r["n"])
     if tri:
         played = [r["n"] for r in tri if r["script_points"] == quadratic.steps(r["n"], alpha)]
-        listed = ", ".join(f"{n:,}" for n in played) or "none"
-        measured = ", ".join(f"{r['n']:,}" for r in tri)
-        out.append(f"Triangle 1.6's output holds every scripted point P_1 … P_s (it played Theorem 3's script) at n = "
-                   f"{listed} of {measured}.")
+        measured = [r["n"] for r in tri]
+        if played == measured:
+            listed = f"every n measured ({measured[0]:,} … {measured[-1]:,})"
+        else:
+            listed = (f"n = {', '.join(f'{n:,}' for n in played) or 'none'} of "
+                      f"{', '.join(f'{n:,}' for n in measured)}")
+        out.append(f"Triangle 1.6's output holds every scripted point P_1 … P_s (it played Theorem 3's script) at {listed}.")
         pairs = []
         for r in tri:
             rr = find(rows, alpha=alpha, n=r["n"], engine=REPLAY, status="ok")
@@ -880,6 +917,9 @@ def write_reports(args, run: Runner, sl, best, out: Path, argv) -> None:
                   f"point (it played the script) for n = {ranges(yes)}; not for n = {ranges(no)}."), ""]
     scripted_slope = next((s["slope"] for s in sl if s["alpha"] == alpha and s["engine"] == REPLAY
                            and s["measure"] == "scripted_created"), None)
+    big_n, big = largest_table(rows, alpha, strategies, sl)
+    big_part = ([(f"Every engine on I({big_n:,}), q = {alpha:g}° (slopes: least-squares fits of log work against log n over "
+                 "the sizes each finished):"), "", big, ""] if big else [])
     parts = [
         "# Barbič and Miller's quadratic example, measured",
         "",
@@ -917,6 +957,7 @@ def write_reports(args, run: Runner, sl, best, out: Path, argv) -> None:
         "",
         f"## Every strategy on the same input, α = {alpha:g}°",
         "",
+        *big_part,
         "Triangles created (ours; Triangle does not count them):",
         "",
         pivot(rows, alpha, "triangles_created", strategies, with_triangle=False),
@@ -989,6 +1030,7 @@ def write_reports(args, run: Runner, sl, best, out: Path, argv) -> None:
         "",
         replay_table(rows, alpha),
         "",
+        *big_part,
         *[f"* {f}" for f in facts],
         *([f"* Log-log slope of the scripted phase: {scripted_slope:.3f}."] if scripted_slope else []),
         "",
