@@ -152,6 +152,18 @@ def mark_subsegment(m, segs, vmark, e, marker, source):
 
 
 @kernel
+def _side(ax, ay, bx, by, px, py):
+    """orient2d of p against the line a -> b, but 0 for a point within a few
+    units in the last place of the line: a rounded crossing vertex starts
+    pieces that are off their segment's line by that much, and the input
+    vertices on the segment must still end those pieces."""
+    s = orient2d(ax, ay, bx, by, px, py)
+    length = np.sqrt((bx - ax) ** 2 + (by - ay) ** 2)
+    tol = 2.0**-48 * (abs(ax) + abs(ay) + abs(bx) + abs(by))
+    return 0.0 if abs(s) <= tol * length else s
+
+
+@kernel
 def _turn_to(m, work, a, b, e0):
     """Turn around ``a`` (from edge ``e0``, origin ``a``) to the edge ``e``
     (origin ``a``) whose triangle contains the start of the ray ``a -> b``.
@@ -168,8 +180,8 @@ def _turn_to(m, work, a, b, e0):
             d = m.corner[lprev(e)]
             x = m.corner[e]
             work[C_ORIENT] += 2
-            od = orient2d(ax, ay, xy[d, 0], xy[d, 1], bx, by)
-            ox = orient2d(ax, ay, xy[x, 0], xy[x, 1], bx, by)
+            od = -_side(ax, ay, bx, by, xy[d, 0], xy[d, 1])
+            ox = -_side(ax, ay, bx, by, xy[x, 0], xy[x, 1])
             if od == 0.0 and (xy[d, 0] - ax) * (bx - ax) + (xy[d, 1] - ay) * (by - ay) > 0.0:
                 return e, 1
             if ox == 0.0 and (xy[x, 0] - ax) * (bx - ax) + (xy[x, 1] - ay) * (by - ay) > 0.0:
@@ -235,7 +247,7 @@ def _recover(m, work, segs, vmark, vtri, a, b, marker, source, buf, state):
             s = 0.0
         else:
             work[C_ORIENT] += 1
-            s = orient2d(ax, ay, bx, by, xy[y, 0], xy[y, 1])
+            s = _side(ax, ay, bx, by, xy[y, 0], xy[y, 1])
         if s > 0.0:
             c = lnext(tw)
         elif s < 0.0:

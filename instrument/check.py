@@ -797,8 +797,11 @@ def _pslg_chains(m: _Mesh, pslg, probs: _Problems) -> list:
 
     # Output vertices strictly inside each input segment.
     pbox = np.stack([X[:, 0], X[:, 0], X[:, 1], X[:, 1]], 1)
-    sbox = np.stack([np.minimum(U[:, 0], W[:, 0]), np.maximum(U[:, 0], W[:, 0]),
-                     np.minimum(U[:, 1], W[:, 1]), np.maximum(U[:, 1], W[:, 1])], 1)
+    # boxes widened by the tolerance: a vertex near a vertical or horizontal
+    # segment may lie a rounding error outside its exact box
+    slack = 2.0 * ON_SEGMENT_RTOL * np.abs(np.concatenate([U, W], 1)).max(1)
+    sbox = np.stack([np.minimum(U[:, 0], W[:, 0]) - slack, np.maximum(U[:, 0], W[:, 0]) + slack,
+                     np.minimum(U[:, 1], W[:, 1]) - slack, np.maximum(U[:, 1], W[:, 1]) + slack], 1)
     pp, ps = _box_pairs(pbox, sbox)
     if len(pp):
         u, w, x = U[ps], W[ps], X[pp]
