@@ -236,8 +236,8 @@ def test_pieces_from_a_rounded_crossing_still_stop_at_vertices_on_the_segment():
     # (0,0)-(10,3) crosses x = 2 at a rounded point 1e-15 left of the line;
     # the vertical segment's next piece must still end at (2,1), (2,2), ...
     grid = np.array([(x, y) for x in range(11) for y in range(11)], dtype=float)
-    at = lambda x, y: 11 * x + y  # noqa: E731
-    segments = np.array([[at(0, 0), at(10, 3)], [at(0, 10), at(10, 0)], [at(2, 0), at(2, 10)]])
+    # vertex (x, y) is 11 x + y: (0,0)-(10,3), (0,10)-(10,0), (2,0)-(2,10)
+    segments = 11 * np.array([[0, 10], [0, 10], [2, 2]]) + np.array([[0, 3], [10, 0], [0, 10]])
     d = {"vertices": grid, "segments": segments}
     for opts in ("p", "pc", "pcq30"):
         r = instrument.triangulate(d, opts)
