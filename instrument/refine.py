@@ -54,6 +54,7 @@ from .locate import (
 from .mesh import (
     NO_EDGE,
     NO_SEG,
+    S_NFREE,
     S_NSLOT,
     S_NVERT,
     bond,
@@ -107,7 +108,8 @@ I_ELIVE = 19  # encroached pool: live records
 I_EFREE = 20  # encroached pool: last freed slot, -1 none (freed slots chain through column 1)
 I_SLICE = 21  # bad triangles taken since the last PAUSE
 I_NEED = 22  # with NEED_ROOM: the triangles (and queue entries) one step needs
-I_NPAR = 23
+I_HLIMIT = 23  # compact the heap when it grows past this (twice its size after the last compaction)
+I_NPAR = 24
 
 P_GOODANGLE = 0  # cos^2 of the minimum angle
 P_LENS = 1  # (2 cos^2 - 1)^2: the lens test
@@ -176,12 +178,7 @@ def heap_push(r, key, t, stamp):
 
 
 @kernel
-def heap_pop(r):
-    """Move the first entry to the slot just past the heap and return that slot."""
-    n = r.ipar[I_HSIZE] - 1
-    r.ipar[I_HSIZE] = n
-    _heap_swap(r, 0, n)
-    i = 0
+def _sift_down(r, i, n):
     while True:
         c = 2 * i + 1
         if c >= n:
@@ -192,7 +189,36 @@ def heap_pop(r):
             break
         _heap_swap(r, i, c)
         i = c
+
+
+@kernel
+def heap_pop(r):
+    """Move the first entry to the slot just past the heap and return that slot."""
+    n = r.ipar[I_HSIZE] - 1
+    r.ipar[I_HSIZE] = n
+    _heap_swap(r, 0, n)
+    _sift_down(r, 0, n)
     return n
+
+
+@kernel
+def heap_compact(r, m):
+    """Drop the stale entries (triangles split or gone since they were
+    queued) and rebuild the heap.  (key, insertion number) orders entries
+    totally, so the pop order of the rest is unchanged; without this, an
+    order that re-queues the same region (``smallest`` on I(n)) keeps
+    quadratically many dead entries."""
+    n = 0
+    for i in range(r.ipar[I_HSIZE]):
+        if m.stamp[r.htri[i]] == r.hstamp[i]:
+            r.hkey[n] = r.hkey[i]
+            r.hseq[n] = r.hseq[i]
+            r.htri[n] = r.htri[i]
+            r.hstamp[n] = r.hstamp[i]
+            n += 1
+    r.ipar[I_HSIZE] = n
+    for i in range(n // 2 - 1, -1, -1):
+        _sift_down(r, i, n)
 
 
 @kernel
@@ -1036,6 +1062,9 @@ def refine(r, m, segs, vmark, parent, vtri, work, state):
                 return status
         if r.ipar[I_HSIZE] == 0 or r.ipar[I_BUDGET] == 0:
             return DONE
+        if r.ipar[I_HSIZE] > max(r.ipar[I_HLIMIT], 2 * (m.size[S_NSLOT] - m.size[S_NFREE]) + 4096):
+            heap_compact(r, m)
+            r.ipar[I_HLIMIT] = 2 * r.ipar[I_HSIZE] + 4096  # amortised: never twice in a row
         if r.ipar[I_SLICE] >= PAUSE_EVERY:
             r.ipar[I_SLICE] = 0
             return PAUSE

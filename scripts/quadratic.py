@@ -705,7 +705,7 @@ def plot_orders(out: Path, strategy: str) -> list[Path]:
     for ax in axes[:, 0]:
         ax.set_ylabel("y")
     fig.suptitle(f"n = {n}, r = {p.r}, h = {p.h:.3f}: blue P_0, red the Steiner points, shaded the triangles at the newest "
-                 "one within [0, 1] × [0, a] (true coordinates, y stretched; points outside the window are not shown)", fontsize=10)
+                 "one, except those at the box and at (0, a), (1, a) (true coordinates, y stretched; points outside the window are not shown)", fontsize=10)
     fig.tight_layout()
     paths = _save(fig, out, "orders")
     plt.close(fig)

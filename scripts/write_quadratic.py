@@ -32,7 +32,7 @@ def main(argv: list[str] | None = None) -> int:
         "--alpha",
         type=float,
         default=20.0,
-        help="minimum angle alpha_min in degrees, 0 < alpha <= 20 (default 20)",
+        help="minimum angle alpha_min in degrees, 0 < alpha <= 34 (default 20; r = 1 above 30)",
     )
     parser.add_argument(
         "-o",
