@@ -521,6 +521,15 @@ def _fill_mesh(row: Row, out: Mapping, keep: bool) -> None:
         }
 
 
+def _fill_work(row: Row, work: Mapping) -> None:
+    """The counters a row shows (Triangle's statistics have no triangles created)."""
+    row.work = dict(work)
+    row.incircle_tests = work.get("incircle_tests")
+    row.orient_tests = work.get("orient_tests")
+    row.circumcenters = work.get("circumcenters")
+    row.triangles_created = work.get("triangles_created")
+
+
 def _error(exc: BaseException) -> str:
     text = str(exc).strip().splitlines()
     return f"{type(exc).__name__}: {text[0] if text else ''}".rstrip(": ")
@@ -572,10 +581,7 @@ def compare(
                 out, tri_row.wall_s = run_triangle(tri, opts, repeat=repeat)
                 _fill_mesh(tri_row, out, keep_meshes)
                 _, stats, _ = triangle_statistics(tri, opts)
-                tri_row.work = stats
-                tri_row.incircle_tests = stats.get("incircle_tests")
-                tri_row.orient_tests = stats.get("orient_tests")
-                tri_row.circumcenters = stats.get("circumcenters")
+                _fill_work(tri_row, stats)
                 if "incircle_tests" not in stats:
                     tri_row.note = "statistics not captured"
                 dropped = _triangle_input(tri)[1]
@@ -604,11 +610,7 @@ def compare(
                 row.status, row.note = "error", _error(exc)
             else:
                 _fill_mesh(row, out, keep_meshes)
-                row.work = work
-                row.incircle_tests = work.get("incircle_tests")
-                row.orient_tests = work.get("orient_tests")
-                row.circumcenters = work.get("circumcenters")
-                row.triangles_created = work.get("triangles_created")
+                _fill_work(row, work)
             rows.append(row)
 
     if "cgal" in engines:

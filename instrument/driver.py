@@ -6,10 +6,12 @@ Pipeline: Delaunay triangulation -> segment recovery, holes, regions (``p``)
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 
 from . import counters, quality, reconstruct
-from .mesh import NO_EDGE, NO_SEG, S_NVERT, live_triangles
+from .mesh import NO_EDGE, NO_SEG, S_NLIVE, S_NVERT, live_triangles
 from .output import Result, _col, _put, edge_ends, unique_edges
 from .pslg import Mesher, carve, clean_segments, enclose_hull, recover_segments, start
 from .strategies import strategy_id
@@ -111,12 +113,35 @@ def triangulate(
     """
     o = parse(opts)
     inp = _validate(tri, o)
-    if o.r:  # refine the given triangles: reconstruct.py
-        return reconstruct.refine_existing(
-            tri, inp, o, strategy=strategy, seed=seed, trace=trace, steiner=steiner, triunsuitable=triunsuitable
-        )
     strategy_id(strategy)  # reject unknown names before any work
     work = counters.new_work()
+    attrs = None
+    if o.r:  # the given triangles, as they are
+        ms, inp, attrs = reconstruct.reconstruct(tri, inp, o, work, seed)
+        if o.quality and int(ms.m.size[S_NLIVE]) > 0:
+            reconstruct.make_delaunay(ms)  # Bowyer-Watson needs a Delaunay mesh
+    else:
+        ms = mesh_input(inp, o, work, seed)
+    rows = None
+    if o.quality and int(ms.m.size[S_NLIVE]) > 0:
+        rows = quality.run(ms, o, strategy=strategy, steiner=steiner, trace=trace, triunsuitable=triunsuitable)
+    # with r, -j leaves out only undead vertices (duplicates, eaten ones),
+    # which reconstruction never makes: unused input vertices stay, as in Triangle
+    result = _assemble(ms, inp, dataclasses.replace(o, j=False) if o.r else o)
+    if attrs is not None and not o.E and "triangles" in result:
+        ancestor = ms.region_attr[live_triangles(ms.m)].astype(np.int64)
+        _put(result, "triangle_attributes", attrs[ancestor])
+    if rows is not None:
+        result.trace = rows
+    result.work = counters.as_dict(work)
+    result.warnings = ms.warnings
+    return result
+
+
+def mesh_input(inp: dict, o: Options, work: np.ndarray, seed: int = 0) -> Mesher:
+    """The (constrained) Delaunay triangulation of the validated input
+    ``inp`` under ``o``, carved, with the hull as segments where refinement
+    needs them: everything ``triangulate`` does before refining."""
     xy = inp["vertices"]
     spare = 2 * len(inp.get("segments", ())) + 16
     ms = start(xy, inp["vertex_markers"], work, seed, spare)
@@ -132,15 +157,7 @@ def triangulate(
         enclose_hull(ms)
     else:
         _mark_hull_vertices(ms)
-    rows = None
-    if o.quality and int(ms.m.size[3]) > 0:
-        rows = quality.run(ms, o, strategy=strategy, steiner=steiner, trace=trace, triunsuitable=triunsuitable)
-    result = _assemble(ms, inp, o)
-    if rows is not None:
-        result.trace = rows
-    result.work = counters.as_dict(work)
-    result.warnings = ms.warnings
-    return result
+    return ms
 
 
 def _mark_hull_vertices(ms: Mesher) -> None:

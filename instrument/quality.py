@@ -24,7 +24,9 @@ class PrecisionError(RuntimeError):
     """Triangle's "Ran out of precision" failure: segments too short to split."""
 
 
-def _new_refiner(ms: Mesher, o: Options, strategy: str, steiner: str, trace: bool, user: bool = False) -> rf.Refiner:
+def _new_refiner(
+    ms: Mesher, o: Options, strategy: str, steiner: str, trace: bool, python_test: bool = False
+) -> rf.Refiner:
     m = ms.m
     slots = m.stamp.shape[0]
     nvcap = m.xy.shape[0]
@@ -38,7 +40,7 @@ def _new_refiner(ms: Mesher, o: Options, strategy: str, steiner: str, trace: boo
     ipar[rf.I_BUDGET] = o.S
     ipar[rf.I_OFFCENTER] = int(steiner == "offcenter")
     ipar[rf.I_ANGLE] = int(o.q and o.min_angle > 0)
-    ipar[rf.I_USER] = int(o.u and not user)
+    ipar[rf.I_USER] = int(o.u and not python_test)  # a Python test runs between kernel rounds instead
     ipar[rf.I_CURRENT] = -1
     ipar[rf.I_EFREE] = -1
     theta = math.radians(o.min_angle) if o.q else 0.0

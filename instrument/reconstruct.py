@@ -44,11 +44,9 @@ ones, which reconstruction never makes.
 
 from __future__ import annotations
 
-import dataclasses
-
 import numpy as np
 
-from . import cdt, counters, quality
+from . import cdt, counters
 from .counters import C_CREATED
 from .insert import flip, should_flip
 from .jit import kernel
@@ -58,15 +56,12 @@ from .mesh import (
     S_NLIVE,
     S_NSLOT,
     S_NVERT,
-    live_triangles,
     lnext,
     lprev,
     new_mesh,
 )
-from .output import Result, _put
 from .predicates import orient2d
 from .pslg import Mesher, enclose_hull, recover_segments
-from .strategies import strategy_id
 from .switches import Options
 
 # _link status codes; bad[1:] say where
@@ -490,37 +485,3 @@ def make_delaunay(ms: Mesher) -> int:
     """Step 5: flip the mesh to a constrained Delaunay one; returns the flips."""
     slots = ms.m.stamp.shape[0]
     return int(_make_delaunay(ms.m, ms.work, np.zeros(3 * slots, dtype=np.int64), np.zeros(3 * slots, dtype=np.uint8)))
-
-
-def refine_existing(
-    tri: dict,
-    inp: dict,
-    o: Options,
-    *,
-    strategy: str = "triangle",
-    seed: int = 0,
-    trace: bool = False,
-    steiner: str = "offcenter",
-    triunsuitable=None,
-) -> Result:
-    """``triangulate`` with ``r``: reconstruct, refine if asked, assemble."""
-    from .driver import _assemble  # the driver imports this module
-
-    strategy_id(strategy)  # reject unknown names before any work
-    work = counters.new_work()
-    ms, inp, attrs = reconstruct(tri, inp, o, work, seed)
-    rows = None
-    if o.quality and int(ms.m.size[S_NLIVE]) > 0:
-        make_delaunay(ms)
-        rows = quality.run(ms, o, strategy=strategy, steiner=steiner, trace=trace, triunsuitable=triunsuitable)
-    # -j leaves out only undead vertices (duplicates, eaten ones), which
-    # reconstruction never makes: unused input vertices stay, as in Triangle
-    result = _assemble(ms, inp, dataclasses.replace(o, j=False))
-    if attrs is not None and not o.E and "triangles" in result:
-        anc = ms.region_attr[live_triangles(ms.m)].astype(np.int64)
-        _put(result, "triangle_attributes", attrs[anc])
-    if rows is not None:
-        result.trace = rows
-    result.work = counters.as_dict(work)
-    result.warnings = ms.warnings
-    return result

@@ -854,8 +854,10 @@ def split_subsegment(r, m, segs, vmark, parent, vtri, work, e, triflaws, state):
             p2 *= 2.0
         while length < 1.5 * p2:
             p2 *= 0.5
+        # p2 from the acute end; with both acute, from org: e is the
+        # encroaching side's edge, and Triangle measures from that edge's org
         split = p2 / length
-        if not acute_org:  # e is on the encroaching side: both acute, measure from org
+        if not acute_org:
             split = 1.0 - split
     px = xy[o, 0] + split * ex
     py = xy[o, 1] + split * ey

@@ -47,10 +47,9 @@ from . import cdt, counters, quadratic
 from . import quality as ql
 from . import refine as rf
 from .cdt import _edge
-from .driver import _assemble, _validate
+from .driver import _assemble, _validate, mesh_input
 from .jit import kernel
 from .mesh import S_NSLOT, S_NVERT
-from .pslg import carve, clean_segments, recover_segments, start
 from .strategies import FIFO, strategy_id
 from .switches import parse
 
@@ -173,10 +172,7 @@ def replay(
     tri = quadratic.example(n, alpha_deg)
     inp = _validate(tri, o)
     work = counters.new_work()
-    xy_in = inp["vertices"]
-    ms = start(xy_in, inp["vertex_markers"], work, seed, 2 * len(inp["segments"]) + 16 + total)
-    recover_segments(ms, clean_segments(inp["segments"], xy_in, ms.dup, ms.warnings), inp["segment_markers"])
-    carve(ms, o, None, None, xy_in)
+    ms = mesh_input(inp, o, work, seed)
     if int(ms.m.size[S_NVERT]) != n + 12 or int(work[counters.C_STEINER]):
         raise ReplayError("the extended input did not triangulate to its own n + 12 vertices")
 
@@ -255,7 +251,7 @@ def replay(
         r.ipar[rf.I_STRATEGY] = strategy_id(then)
         r.ipar[rf.I_OFFCENTER] = int(steiner == "offcenter")
         r.ipar[rf.I_HSIZE] = 0
-        _finish(ms, r)
+        ql.finish(ms, r)  # the engine's refinement loop from where the script left it
     result = _assemble(ms, inp, o)
     result.work = counters.as_dict(work)
     result.steps = steps
@@ -265,8 +261,3 @@ def replay(
     result.warnings = ms.warnings
     return result
 
-
-def _finish(ms, r) -> None:
-    """The engine's refinement loop from where the script left it (what
-    ``quality.run`` does after creating its refiner)."""
-    ql.finish(ms, r)

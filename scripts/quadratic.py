@@ -114,19 +114,26 @@ def _best_of(repeat: int, fn):
     return out, best
 
 
-def row_replay(n: int, alpha: float, then: str) -> dict:
-    res, wall = _best_of(1, lambda: quadratic.replay(n, alpha, then=then))
+def _our_counts(res, n: int, alpha: float) -> dict:
+    """Output size and work counters of one of our runs."""
     w = res.work
     return {
         "vertices": len(res["vertices"]),
         "triangles": len(res["triangles"]),
         "steiner_points": w["steiner_points"],
         "triangles_created": w["triangles_created"],
-        "scripted_created": int(res.steps.sum()),
         "incircle_tests": w["incircle_tests"],
         "orient_tests": w["orient_tests"],
         "circumcenters": w["circumcenters"],
         "script_points": script_points(res["vertices"], n, alpha),
+    }
+
+
+def row_replay(n: int, alpha: float, then: str) -> dict:
+    res, wall = _best_of(1, lambda: quadratic.replay(n, alpha, then=then))
+    return {
+        **_our_counts(res, n, alpha),
+        "scripted_created": int(res.steps.sum()),
         "steps": len(res.steps),
         "wall_s": wall,
         "note": f"then={then}; time includes the per-step checks",
@@ -138,16 +145,8 @@ def row_replay(n: int, alpha: float, then: str) -> dict:
 def row_ours(n: int, alpha: float, strategy: str, repeat: int) -> dict:
     d = quadratic.example(n, alpha)
     res, wall = _best_of(repeat, lambda: instrument.triangulate(d, opts(alpha), strategy=strategy))
-    w = res.work
     return {
-        "vertices": len(res["vertices"]),
-        "triangles": len(res["triangles"]),
-        "steiner_points": w["steiner_points"],
-        "triangles_created": w["triangles_created"],
-        "incircle_tests": w["incircle_tests"],
-        "orient_tests": w["orient_tests"],
-        "circumcenters": w["circumcenters"],
-        "script_points": script_points(res["vertices"], n, alpha),
+        **_our_counts(res, n, alpha),
         "wall_s": wall,
     }
 
