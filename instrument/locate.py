@@ -154,3 +154,60 @@ def line_walk(m, work, t, px, py, max_steps):
         t = tw // 3
         entered = tw
     return LOC_FAILED, -1
+
+
+@kernel
+def precise_walk(m, work, e, px, py, max_steps):
+    """Locate ``(px, py)`` from edge ``e`` by Triangle's ``preciselocate``
+    rule, stopping at subsegments; the point must lie left of ``e``.
+
+    At a triangle entered through edge (o, d) with apex a: if the point is
+    beyond both other edges, cross the one the point's direction from a
+    favours; if beyond one, cross it.  Refinement walks this way so that a
+    new vertex finds the same triangle and edge, and runs into the same
+    subsegments, as it does in Triangle.
+
+    Returns ``(status, e)``: LOC_INSIDE with the last edge crossed (or the
+    start) as ``e``; LOC_ON_EDGE with the edge, oriented as the walk found
+    it; LOC_ON_VERTEX with an edge whose origin is the vertex; LOC_BLOCKED
+    with the subsegment or boundary edge in the way; LOC_FAILED after
+    ``max_steps``.
+    """
+    xy = m.xy
+    for _ in range(max_steps):
+        work[C_WALK] += 1
+        o = m.corner[lnext(e)]
+        d = m.corner[lprev(e)]
+        a = m.corner[e]
+        if xy[a, 0] == px and xy[a, 1] == py:
+            return LOC_ON_VERTEX, lprev(e)
+        work[C_ORIENT] += 2
+        left = orient2d(xy[o, 0], xy[o, 1], xy[a, 0], xy[a, 1], px, py)
+        right = orient2d(xy[a, 0], xy[a, 1], xy[d, 0], xy[d, 1], px, py)
+        if left > 0.0 and right > 0.0:
+            go_left = (xy[a, 0] - px) * (xy[d, 0] - xy[o, 0]) + (xy[a, 1] - py) * (xy[d, 1] - xy[o, 1]) > 0.0
+        elif left > 0.0:
+            go_left = True
+        elif right > 0.0:
+            go_left = False
+        elif left == 0.0:
+            return _on_edge(m, lprev(e), px, py)
+        elif right == 0.0:
+            return _on_edge(m, lnext(e), px, py)
+        else:
+            return LOC_INSIDE, e
+        cross = lprev(e) if go_left else lnext(e)
+        tw = m.twin[cross]
+        if m.seg[cross] >= 0 or tw == NO_EDGE or is_ghost(m, tw // 3):
+            return LOC_BLOCKED, cross
+        e = tw
+    return LOC_FAILED, -1
+
+
+@kernel
+def _on_edge(m, e, px, py):
+    """On edge ``e``'s line inside its triangle: on the edge or at an end."""
+    for v in (m.corner[lnext(e)], m.corner[lprev(e)]):
+        if m.xy[v, 0] == px and m.xy[v, 1] == py:
+            return LOC_ON_VERTEX, e if v == m.corner[lnext(e)] else lnext(e)
+    return LOC_ON_EDGE, e

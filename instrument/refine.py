@@ -48,8 +48,10 @@ from .locate import (
     LOC_INSIDE,
     LOC_ON_EDGE,
     LOC_ON_VERTEX,
+    LOC_FAILED,
     line_walk,
     next_random,
+    precise_walk,
 )
 from .mesh import (
     NO_EDGE,
@@ -109,7 +111,8 @@ I_EFREE = 20  # encroached pool: last freed slot, -1 none (freed slots chain thr
 I_SLICE = 21  # bad triangles taken since the last PAUSE
 I_NEED = 22  # with NEED_ROOM: the triangles (and queue entries) one step needs
 I_HLIMIT = 23  # compact the heap when it grows past this (twice its size after the last compaction)
-I_NPAR = 24
+I_EBUSY = 24  # split_encroached is under way (resume at I_ECURSOR); else it starts a pass at slot 0
+I_NPAR = 25
 
 P_GOODANGLE = 0  # cos^2 of the minimum angle
 P_LENS = 1  # (2 cos^2 - 1)^2: the lens test
@@ -449,11 +452,17 @@ def queue_triangles(r, m, work, ts, state):
 
 
 @kernel
-def steiner_point(r, m, t):
-    """Triangle ``t``'s off-center (when closer) or circumcenter, and the
-    barycentric parameters (xi, eta) of it relative to corners 0, 1, 2."""
+def steiner_point(r, m, h):
+    """The off-center (when closer) or circumcenter of the triangle of
+    handle ``h`` (an edge: org, dest, apex as ``mesh`` defines them), and
+    its barycentric parameters (xi, eta) relative to (org, dest, apex).
+
+    Computed from the handle's corners in Triangle's order: a bad triangle
+    is split from handle ``3 t`` (apex at corner 0, where an insertion puts
+    the new vertex, as in the handle Triangle queues), which gives Triangle's
+    rounding, so the same Steiner points."""
     xy = m.xy
-    o, d, a = m.corner[3 * t], m.corner[3 * t + 1], m.corner[3 * t + 2]
+    o, d, a = m.corner[lnext(h)], m.corner[lprev(h)], m.corner[h]
     ox, oy = xy[o, 0], xy[o, 1]
     xdo, ydo = xy[d, 0] - ox, xy[d, 1] - oy
     xao, yao = xy[a, 0] - ox, xy[a, 1] - oy
@@ -557,12 +566,38 @@ def _unsee(r, n):
 @kernel
 def _would_create(r, m, work, t):
     """Triangles a split of ``t`` would create (the adversary's greed)."""
-    px, py, _, _, _ = steiner_point(r, m, t)
+    px, py, _, _, _ = steiner_point(r, m, 3 * t)
     if math.isnan(px) or math.isnan(py):
         return 0
     n, nb = _cavity(r, m, work, px, py, t, -1, -1)
     _unsee(r, n)
     return nb
+
+
+@kernel
+def _order_rim(r, nb, first):
+    """Put the cavity's rim ``r.bnd[:nb]`` in counter-clockwise order from
+    the edge leaving vertex ``first``: the order in which Triangle's flips
+    meet the new vertex's triangles, so bad triangles and encroached
+    subsegments are queued in its order."""
+    bnd, bval, slot = r.bnd, r.bval, r.vslot
+    for j in range(nb):
+        slot[bnd[j, 1]] = j
+    want = first
+    for pos in range(nb):
+        j = slot[want]
+        if j < 0:
+            break
+        if j != pos:
+            for c in range(bnd.shape[1]):
+                bnd[j, c], bnd[pos, c] = bnd[pos, c], bnd[j, c]
+            for c in range(bval.shape[1]):
+                bval[j, c], bval[pos, c] = bval[pos, c], bval[j, c]
+            slot[bnd[j, 1]] = j
+            slot[bnd[pos, 1]] = pos
+        want = bnd[pos, 2]
+    for j in range(nb):
+        slot[bnd[j, 1]] = -1
 
 
 @kernel
@@ -805,9 +840,14 @@ def _chew_delete(r, m, segs, vtri, work, e, state):
     """Before splitting subsegment ``e``: delete free vertices inside its
     diametral circle on a side where no other segment meets it.  Returns
     False if there was no room (nothing changed on that side)."""
+    u = m.corner[lnext(e)]
+    v = m.corner[lprev(e)]
     for side in range(2):
-        f = e if side == 0 else m.twin[e]
-        if f == NO_EDGE:
+        if side == 0:
+            f = e
+        else:  # found afresh: deletions on the first side re-make e's triangle
+            f = _edge(m, work, vtri, v, u, state)
+        if f < 0 or f == NO_EDGE:
             continue
         if m.seg[lnext(f)] != NO_SEG or m.seg[lprev(f)] != NO_SEG:
             continue
@@ -845,25 +885,28 @@ def split_subsegment(r, m, segs, vmark, parent, vtri, work, e, triflaws, state):
     if tw != NO_EDGE:
         acute_org = acute_org or m.seg[lnext(tw)] != NO_SEG
         acute_dest = acute_dest or m.seg[lprev(tw)] != NO_SEG
-    ex, ey = xy[d, 0] - xy[o, 0], xy[d, 1] - xy[o, 1]
+    # Triangle's record runs the other way along e, from e0 = d to e1 = o;
+    # computing from its ends gives its rounding, so the same vertices
+    e0, e1 = d, o
+    acute0, acute1 = acute_dest, acute_org
+    ex, ey = xy[e1, 0] - xy[e0, 0], xy[e1, 1] - xy[e0, 1]
     split = 0.5
-    if acute_org or acute_dest:
+    if acute0 or acute1:
         length = np.sqrt(ex * ex + ey * ey)
         p2 = 1.0
         while length > 3.0 * p2:
             p2 *= 2.0
         while length < 1.5 * p2:
             p2 *= 0.5
-        # p2 from the acute end; with both acute, from org: e is the
-        # encroaching side's edge, and Triangle measures from that edge's org
+        # a power of two from the acute end; with both acute, from e1
         split = p2 / length
-        if not acute_org:
+        if acute1:
             split = 1.0 - split
-    px = xy[o, 0] + split * ex
-    py = xy[o, 1] + split * ey
+    px = xy[e0, 0] + split * ex
+    py = xy[e0, 1] + split * ey
     # one correction toward the segment's line
     den = ex * ex + ey * ey
-    mult = orient2d(xy[o, 0], xy[o, 1], xy[d, 0], xy[d, 1], px, py) / den
+    mult = orient2d(xy[e0, 0], xy[e0, 1], xy[e1, 0], xy[e1, 1], px, py) / den
     if mult != 0.0 and den != 0.0 and not math.isnan(mult):
         px += mult * ey
         py += mult * -ex
@@ -876,9 +919,10 @@ def split_subsegment(r, m, segs, vmark, parent, vtri, work, e, triflaws, state):
     if not _room(r, m, nb) or segs.size[R_NREC] >= segs.marker.shape[0]:
         _unsee(r, n)
         return NEED_ROOM
+    _order_rim(r, nb, d)  # Triangle circles the new vertex from e's destination
     rec = m.seg[e]
     half = new_record(segs, segs.marker[rec], segs.source[rec], segs.ends[rec, 0], segs.ends[rec, 1])
-    v = _new_vertex(m, r, vmark, parent, px, py, V_SEGMENT, segs.marker[rec], o, d, o, split, 0.0)
+    v = _new_vertex(m, r, vmark, parent, px, py, V_SEGMENT, segs.marker[rec], e0, e1, e0, split, 0.0)
     _fill_cavity(r, m, work, vtri, v, n, nb)
     for j in range(nb):  # the halves: spokes to o and d (edge 2 of (v, o|d, x), edge 1 of (v, x, o|d))
         t = r.fan[j]
@@ -907,6 +951,9 @@ def split_encroached(r, m, segs, vmark, parent, vtri, work, triflaws, state):
     """Split queued encroached subsegments until none is left (or the budget
     is spent), in passes over the pool.  Returns DONE, NEED_ROOM or
     PRECISION."""
+    if not r.ipar[I_EBUSY]:  # each call starts at the pool's first slot, as Triangle's does
+        r.ipar[I_EBUSY] = 1
+        r.ipar[I_ECURSOR] = 0
     while _enc_len(r) > 0 and r.ipar[I_BUDGET] != 0:
         i = r.ipar[I_ECURSOR]
         if i >= r.ipar[I_EFRESH]:  # the next pass
@@ -933,25 +980,31 @@ def split_encroached(r, m, segs, vmark, parent, vtri, work, triflaws, state):
                 return status
         _enc_free(r, i)
         r.ipar[I_ECURSOR] = i + 1
+    r.ipar[I_EBUSY] = 0
     return DONE
 
 
 @kernel
-def split_bad_triangle(r, m, segs, vmark, parent, vtri, work, t, state):
-    """Insert triangle ``t``'s off-center or circumcenter unless it is across a
-    subsegment or encroaches one (then the subsegment is queued).  Returns
-    DONE or NEED_ROOM (nothing changed)."""
+def split_bad_triangle(r, m, segs, vmark, parent, vtri, work, h, state):
+    """Insert the off-center or circumcenter of handle ``h``'s triangle
+    unless it is across a subsegment or encroaches one (then the subsegment
+    is queued).  Returns DONE or NEED_ROOM (nothing changed)."""
     xy = m.xy
-    px, py, xi, eta, off = steiner_point(r, m, t)
+    t = h // 3
+    px, py, xi, eta, off = steiner_point(r, m, h)
     work[C_CIRCUMCENTER] += 1
-    a, b, c = m.corner[3 * t], m.corner[3 * t + 1], m.corner[3 * t + 2]
+    a, b, c = m.corner[h], m.corner[lnext(h)], m.corner[lprev(h)]  # apex, org, dest
     if math.isnan(px) or math.isnan(py) or (px == xy[a, 0] and py == xy[a, 1]) or (px == xy[b, 0] and py == xy[b, 1]) or (
         px == xy[c, 0] and py == xy[c, 1]
     ):
         work[C_DUPLICATE] += 1
         return DONE
     steps0 = work[C_WALK]
-    status, e = line_walk(m, work, t, px, py, 4 * m.stamp.shape[0] + 64)
+    # Triangle's walk from its handle (t, 0), or (t, 2) when that puts the
+    # point on the inner side of the first edge
+    status, e = precise_walk(m, work, lprev(h) if eta < xi else h, px, py, m.stamp.shape[0] + 64)
+    if status == LOC_FAILED:
+        status, e = line_walk(m, work, t, px, py, 4 * m.stamp.shape[0] + 64)
     steps = work[C_WALK] - steps0
     if status == LOC_BLOCKED or (status == LOC_ON_EDGE and m.seg[e] != NO_SEG):
         if m.seg[e] != NO_SEG and _may_split(r, m, e):
@@ -972,6 +1025,9 @@ def split_bad_triangle(r, m, segs, vmark, parent, vtri, work, t, state):
     if not _room(r, m, nb):
         _unsee(r, n)
         return NEED_ROOM
+    # Triangle's flips circle the new vertex from the located edge's origin
+    # (its destination when the point is on it)
+    _order_rim(r, nb, m.corner[lprev(e)] if status == LOC_ON_EDGE else m.corner[lnext(e)])
     # a point inside a subsegment's lens is rejected; the subsegment is split
     xy = m.xy
     encroached = 0
@@ -985,8 +1041,8 @@ def split_bad_triangle(r, m, segs, vmark, parent, vtri, work, t, state):
         work[C_UNDONE] += nb
         _trace(r, T_REJECTED, 0, 0, steps, r.ipar[I_HSIZE])
         return DONE
-    # attributes: barycentric in the triangle's corners 0, 1, 2
-    v = _new_vertex(m, r, vmark, parent, px, py, V_FREE, 0, a, b, c, xi, eta)
+    # attributes: barycentric in (org, dest, apex)
+    v = _new_vertex(m, r, vmark, parent, px, py, V_FREE, 0, b, c, a, xi, eta)
     _fill_cavity(r, m, work, vtri, v, n, nb)
     work[C_STEINER] += 1
     if r.ipar[I_BUDGET] > 0:
@@ -1048,7 +1104,7 @@ def refine(r, m, segs, vmark, parent, vtri, work, state):
             t = r.ipar[I_CURRENT]
             stamp = r.ipar[I_CURSTAMP]
             if m.stamp[t] == stamp:
-                status = split_bad_triangle(r, m, segs, vmark, parent, vtri, work, t, state)
+                status = split_bad_triangle(r, m, segs, vmark, parent, vtri, work, 3 * t, state)
                 if status != DONE:
                     return status
             r.ipar[I_CURRENT] = -1

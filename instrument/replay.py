@@ -80,7 +80,12 @@ def scripted_split(r, m, segs, vmark, parent, vtri, work, look, look_state, c, d
     status = NOT_FOUND
     if e >= 0 and m.corner[e] == p:
         r.ipar[rf.I_HSIZE] = 0
-        status = rf.split_bad_triangle(r, m, segs, vmark, parent, vtri, work, e // 3, state)
+        # computed from the handle with origin at the slot's corner 0 (the
+        # new vertex for a triangle an insertion made): I(n) is full of
+        # cocircular trapezoids, so P_k's last bits decide Delaunay ties,
+        # and this rounding is the one tests/engine/test_replay.py checks
+        # step by step against Triangle's triangulation from scratch
+        status = rf.split_bad_triangle(r, m, segs, vmark, parent, vtri, work, 3 * (e // 3) + 2, state)
     return status
 
 
