@@ -36,6 +36,21 @@ def test_quality_meshes_match_triangle(name, opts):
     assert w["triangles_created"] - w["triangles_deleted"] == len(r.get("triangles", []))
 
 
+def vertex_set(mesh: dict) -> set[tuple[float, float]]:
+    return {(float(x), float(y)) for x, y in mesh["vertices"]}
+
+
+@pytest.mark.parametrize(
+    ("name", "opts"),
+    [("box.2", "pq30"), ("double_hex3.1", "pq30"), ("face", "pq30D"), ("face", "pq20"), ("la", "pq30S50"), ("box.4", "pq30S100")],
+)
+def test_refinement_replays_triangle_bit_for_bit(name, opts):
+    """Triangle's order, split arithmetic and walk: on these inputs (or for
+    the first S Steiner points) our vertices are Triangle's, bit for bit."""
+    d = data(name)
+    assert vertex_set(instrument.triangulate(d, opts)) == vertex_set(triangle.triangulate(d, opts))
+
+
 @pytest.mark.parametrize("strategy", list(instrument.strategies()))
 @pytest.mark.parametrize("steiner", ["offcenter", "circumcenter"])
 def test_every_strategy_meets_the_bound(strategy, steiner):
