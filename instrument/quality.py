@@ -43,6 +43,8 @@ def _new_refiner(
     ipar[rf.I_USER] = int(o.u and not python_test)  # a Python test runs between kernel rounds instead
     ipar[rf.I_CURRENT] = -1
     ipar[rf.I_EFREE] = -1
+    ipar[rf.I_BTOP] = -1
+    ipar[rf.I_BFREE] = -1
     theta = math.radians(o.min_angle) if o.q else 0.0
     good = math.cos(theta) ** 2
     par[rf.P_GOODANGLE] = good
@@ -63,6 +65,7 @@ def _new_refiner(
         hseq=np.zeros(slots + 16, dtype=np.int64),
         htri=np.zeros(slots + 16, dtype=np.int64),
         hstamp=np.zeros(slots + 16, dtype=np.int64),
+        bucket=np.full((2, rf.NBUCKETS), -1, dtype=np.int64),
         enc=np.zeros((2 * int(ms.segs.size[cdt.R_NREC]) + 64, 4), dtype=np.int64),  # room for every subsegment
         cav=np.zeros(slots, dtype=np.int64),
         fan=np.zeros(slots, dtype=np.int64),
@@ -119,11 +122,34 @@ def run(
     if o.S == 0:
         return np.zeros(0, dtype=TRACE_DTYPE) if trace else None
     user = triunsuitable if o.u else None
+    _presize(ms, o)
     r = _new_refiner(ms, o, strategy, steiner, trace, user is not None)  # every vertex so far: V_INPUT (0)
     cdt.build_vertex_edges(ms.m, ms.vtri)
     rf.tally_encroached(r, ms.m, ms.segs)
     r = finish(ms, r, user)
     return _trace_table(r.trace[: int(r.ipar[rf.I_NTRACE])]) if trace else None
+
+
+# Measured: q20-q34 meshes under a fixed area bound A come out at 1.2-1.6 triangles per A
+# of domain (the unit square pq30a1e-6: 1,584,789), so room for 1.7 per A is rarely grown.
+TRIANGLES_PER_AREA_BOUND = 1.7
+PRESIZE_LIMIT = 1 << 26  # triangles: beyond this, grow on demand
+
+
+def _presize(ms: Mesher, o: Options) -> None:
+    """Under a fixed area bound the mesh size is predictable: make room for
+    it at once rather than doubling (and copying) a dozen times."""
+    if not o.max_area > 0:
+        return
+    m = ms.m
+    n = int(m.size[S_NSLOT])
+    c = m.corner[: 3 * n].reshape(-1, 3)
+    c = c[(m.stamp[:n] > 0) & (c.min(axis=1) >= 0)]
+    p, q, s = ms.m.xy[c[:, 0]], ms.m.xy[c[:, 1]], ms.m.xy[c[:, 2]]
+    area = 0.5 * float(np.abs((q[:, 0] - p[:, 0]) * (s[:, 1] - p[:, 1]) - (q[:, 1] - p[:, 1]) * (s[:, 0] - p[:, 0])).sum())
+    want = min(TRIANGLES_PER_AREA_BOUND * area / o.max_area, PRESIZE_LIMIT)
+    if want > 2 * n:  # vertices: about half the triangles, and the free vertices Chew's rule deletes
+        ms.grow(vertices=int(0.7 * want), triangles=int(want))
 
 
 def _judge(m, user: Callable, judged: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

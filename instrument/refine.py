@@ -67,7 +67,7 @@ from .mesh import (
     spare_triangles,
 )
 from .predicates import incircle, orient2d
-from .strategies import ADVERSARY, RANDOM, priority
+from .strategies import ADVERSARY, RANDOM, TRIANGLE, priority
 
 # vertex types
 V_INPUT = 0
@@ -112,7 +112,12 @@ I_SLICE = 21  # bad triangles taken since the last PAUSE
 I_NEED = 22  # with NEED_ROOM: the triangles (and queue entries) one step needs
 I_HLIMIT = 23  # compact the heap when it grows past this (twice its size after the last compaction)
 I_EBUSY = 24  # split_encroached is under way (resume at I_ECURSOR); else it starts a pass at slot 0
-I_NPAR = 25
+I_BTOP = 25  # bucket queue (strategy triangle): the highest non-empty bucket, -1 none
+I_BFREE = 26  # bucket queue: a free entry, -1 none (free entries chain through hseq)
+I_BFRESH = 27  # bucket queue: entries ever used
+I_NPAR = 28
+
+NBUCKETS = 4096
 
 P_GOODANGLE = 0  # cos^2 of the minimum angle
 P_LENS = 1  # (2 cos^2 - 1)^2: the lens test
@@ -130,10 +135,11 @@ class Refiner(NamedTuple):
     vtype: np.ndarray  # (V,) int8 V_*
     area: np.ndarray  # (T,) float64 area bound per triangle slot, <= 0 none
     attr: np.ndarray  # (T,) float64 regional attribute per triangle slot
-    hkey: np.ndarray  # (H,) heap of bad triangles: key,
-    hseq: np.ndarray  # insertion number (ties: earlier first),
+    hkey: np.ndarray  # (H,) queued bad triangles: key,
+    hseq: np.ndarray  # insertion number (ties: earlier first; the bucket queue: next entry),
     htri: np.ndarray  # triangle slot,
     hstamp: np.ndarray  # and its stamp when queued
+    bucket: np.ndarray  # (2, NBUCKETS) int64 the bucket queue's first and last entries, -1 empty
     enc: np.ndarray  # (E, 4) int64 pool of encroached subsegments: ends (-1: free slot), edge, its triangle's stamp
     cav: np.ndarray  # (T,) int64 scratch: cavity triangles
     fan: np.ndarray  # (T,) int64 scratch: the triangles an insertion made
@@ -145,6 +151,27 @@ class Refiner(NamedTuple):
 
 
 # ------------------------------------------------------------------ queues
+#
+# The bad triangles wait in a binary heap ordered by (key, insertion number),
+# except under strategy "triangle", whose keys are Triangle's 4096 bucket
+# numbers: there, as in Triangle, a FIFO list per bucket (entries linked
+# through ``hseq``) queues and serves in constant time.  Both orders are the
+# same; the buckets are just faster.
+
+
+@kernel
+def _bucketed(r):
+    return r.ipar[I_STRATEGY] == TRIANGLE
+
+
+@kernel
+def queue_clear(r):
+    """Empty the queue."""
+    r.ipar[I_HSIZE] = 0
+    r.ipar[I_BTOP] = -1
+    r.ipar[I_BFREE] = -1
+    r.ipar[I_BFRESH] = 0
+    r.bucket[:, :] = -1
 
 
 @kernel
@@ -163,8 +190,37 @@ def _heap_swap(r, i, j):
 
 
 @kernel
+def _bucket_append(r, i):
+    """Link entry ``i`` at the tail of its bucket (key = -bucket)."""
+    b = int(-r.hkey[i])
+    r.hseq[i] = -1
+    tail = r.bucket[1, b]
+    if tail >= 0:
+        r.hseq[tail] = i
+    else:
+        r.bucket[0, b] = i
+    r.bucket[1, b] = i
+    if b > r.ipar[I_BTOP]:
+        r.ipar[I_BTOP] = b
+
+
+@kernel
 def heap_push(r, key, t, stamp):
     """Queue triangle ``t`` (the caller made sure there is room)."""
+    if _bucketed(r):
+        i = r.ipar[I_BFREE]
+        if i >= 0:
+            r.ipar[I_BFREE] = r.hseq[i]
+        else:
+            i = r.ipar[I_BFRESH]
+            r.ipar[I_BFRESH] = i + 1
+        r.ipar[I_HSIZE] += 1
+        r.ipar[I_SEQ] += 1
+        r.hkey[i] = key
+        r.htri[i] = t
+        r.hstamp[i] = stamp
+        _bucket_append(r, i)
+        return
     i = r.ipar[I_HSIZE]
     r.ipar[I_HSIZE] = i + 1
     r.hkey[i] = key
@@ -196,9 +252,23 @@ def _sift_down(r, i, n):
 
 @kernel
 def heap_pop(r):
-    """Move the first entry to the slot just past the heap and return that slot."""
+    """Take the first entry off the queue and return its slot, whose fields
+    stay readable until the next push."""
     n = r.ipar[I_HSIZE] - 1
     r.ipar[I_HSIZE] = n
+    if _bucketed(r):
+        b = r.ipar[I_BTOP]
+        i = r.bucket[0, b]
+        nxt = r.hseq[i]
+        r.bucket[0, b] = nxt
+        if nxt < 0:
+            r.bucket[1, b] = -1
+            while b >= 0 and r.bucket[0, b] < 0:
+                b -= 1
+            r.ipar[I_BTOP] = b
+        r.hseq[i] = r.ipar[I_BFREE]
+        r.ipar[I_BFREE] = i
+        return i
     _heap_swap(r, 0, n)
     _sift_down(r, 0, n)
     return n
@@ -207,10 +277,29 @@ def heap_pop(r):
 @kernel
 def heap_compact(r, m):
     """Drop the stale entries (triangles split or gone since they were
-    queued) and rebuild the heap.  (key, insertion number) orders entries
-    totally, so the pop order of the rest is unchanged; without this, an
-    order that re-queues the same region (``smallest`` on I(n)) keeps
-    quadratically many dead entries."""
+    queued), keeping the order of the rest; without this, an order that
+    re-queues the same region (``smallest`` on I(n)) keeps quadratically
+    many dead entries."""
+    if _bucketed(r):
+        live = 0
+        r.ipar[I_BTOP] = -1
+        for b in range(NBUCKETS):
+            i = r.bucket[0, b]
+            r.bucket[0, b] = -1
+            r.bucket[1, b] = -1
+            while i >= 0:
+                nxt = r.hseq[i]
+                if m.stamp[r.htri[i]] == r.hstamp[i]:
+                    _bucket_append(r, i)
+                    live += 1
+                else:
+                    r.hseq[i] = r.ipar[I_BFREE]
+                    r.ipar[I_BFREE] = i
+                i = nxt
+        r.ipar[I_HSIZE] = live
+        return
+    # (key, insertion number) orders entries totally: rebuilding the heap
+    # leaves the pop order of the rest unchanged
     n = 0
     for i in range(r.ipar[I_HSIZE]):
         if m.stamp[r.htri[i]] == r.hstamp[i]:
@@ -1093,7 +1182,7 @@ def refine(r, m, segs, vmark, parent, vtri, work, state):
         if r.ipar[I_PHASE] == 1:  # every triangle's quality
             if r.hkey.shape[0] < m.size[S_NSLOT] + 16:
                 return NEED_ROOM
-            r.ipar[I_HSIZE] = 0
+            queue_clear(r)
             for t in range(m.size[S_NSLOT]):
                 if m.stamp[t] > 0:
                     test_triangle(r, m, segs, vtri, work, t, state)
@@ -1120,7 +1209,9 @@ def refine(r, m, segs, vmark, parent, vtri, work, state):
                 return status
         if r.ipar[I_HSIZE] == 0 or r.ipar[I_BUDGET] == 0:
             return DONE
-        if r.ipar[I_HSIZE] > max(r.ipar[I_HLIMIT], 2 * (m.size[S_NSLOT] - m.size[S_NFREE]) + 4096):
+        # compact when stale entries outnumber live triangles, or before the queue must grow
+        live = m.size[S_NSLOT] - m.size[S_NFREE]
+        if r.ipar[I_HSIZE] > max(r.ipar[I_HLIMIT], min(2 * live + 4096, r.hkey.shape[0] - 1024)):
             heap_compact(r, m)
             r.ipar[I_HLIMIT] = 2 * r.ipar[I_HSIZE] + 4096  # amortised: never twice in a row
         if r.ipar[I_SLICE] >= PAUSE_EVERY:

@@ -79,7 +79,7 @@ def scripted_split(r, m, segs, vmark, parent, vtri, work, look, look_state, c, d
     e = _edge(m, look, vtri, c, d, look_state)
     status = NOT_FOUND
     if e >= 0 and m.corner[e] == p:
-        r.ipar[rf.I_HSIZE] = 0
+        rf.queue_clear(r)
         # computed from the handle with origin at the slot's corner 0 (the
         # new vertex for a triangle an insertion made): I(n) is full of
         # cocircular trapezoids, so P_k's last bits decide Delaunay ties,
@@ -255,7 +255,7 @@ def replay(
     if then is not None:
         r.ipar[rf.I_STRATEGY] = strategy_id(then)
         r.ipar[rf.I_OFFCENTER] = int(steiner == "offcenter")
-        r.ipar[rf.I_HSIZE] = 0
+        rf.queue_clear(r)
         ql.finish(ms, r)  # the engine's refinement loop from where the script left it
     result = _assemble(ms, inp, o)
     result.work = counters.as_dict(work)

@@ -117,6 +117,44 @@ def test_triangle_buckets_by_hand():
     assert triangle_bucket(1e-6) > triangle_bucket(1e-3) > triangle_bucket(1.0) > triangle_bucket(1e3)
 
 
+def _queue(strategy: str, capacity: int = 64):
+    """A refiner holding only a bad-triangle queue."""
+    from instrument import refine as rf
+    from instrument.strategies import strategy_id
+
+    z = np.zeros(0, dtype=np.int64)
+    ipar = np.zeros(rf.I_NPAR, dtype=np.int64)
+    ipar[rf.I_STRATEGY] = strategy_id(strategy)
+    r = rf.Refiner(
+        ipar=ipar, par=np.zeros(rf.P_NPAR), vtype=np.zeros(0, dtype=np.int8), area=np.zeros(0), attr=np.zeros(0),
+        hkey=np.zeros(capacity), hseq=np.zeros(capacity, dtype=np.int64), htri=np.zeros(capacity, dtype=np.int64),
+        hstamp=np.zeros(capacity, dtype=np.int64), bucket=np.zeros((2, rf.NBUCKETS), dtype=np.int64),
+        enc=np.zeros((0, 4), dtype=np.int64), cav=z, fan=z, seen=np.zeros(0, dtype=np.int8),
+        bnd=np.zeros((0, 5), dtype=np.int64), bval=np.zeros((0, 2)), vslot=z, trace=np.zeros((0, 5), dtype=np.int64),
+    )
+    rf.queue_clear(r)
+    return rf, r
+
+
+@pytest.mark.parametrize("strategy", ["triangle", "fifo"])
+def test_bucket_queue_serves_finest_first_fifo_within_and_compacts_in_order(strategy):
+    # Triangle's queue (spec 4.8.4): squared shortest edges 1.3 and 1.0 share
+    # bucket 2047, 0.5 is in 2049, 0.25 in 2051; the highest bucket goes first.
+    from collections import namedtuple
+
+    rf, r = _queue(strategy)
+    keys = [1.3, 0.5, 1.0, 0.25, 0.5, 2.0, 0.25]
+    for t, key in enumerate(keys):
+        rf.heap_push(r, -float(triangle_bucket(key)) if strategy == "triangle" else 0.0, t, 1)
+    # triangles 4 and 0 die: compaction must drop them and keep the order of the rest
+    Stamps = namedtuple("Stamps", "stamp")
+    rf.heap_compact(r, Stamps(np.array([0, 1, 1, 1, 0, 1, 1], dtype=np.int32)))
+    order = [int(r.htri[rf.heap_pop(r)]) for _ in range(int(r.ipar[rf.I_HSIZE]))]
+    assert order == ([3, 6, 1, 2, 5] if strategy == "triangle" else [1, 2, 3, 5, 6])
+    rf.heap_push(r, -2047.0 if strategy == "triangle" else 0.0, 9, 1)  # freed entries are reused
+    assert int(r.htri[rf.heap_pop(r)]) == 9 and r.ipar[rf.I_HSIZE] == 0
+
+
 def _areas(r):
     p = r["vertices"][r["triangles"]]
     u, v = p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]
