@@ -1,0 +1,120 @@
+#!/usr/bin/env python
+"""How far Triangle's own mesh size moves when the input is only re-expressed.
+
+Triangle's refinement serves bad triangles in an order that depends on
+incidental things: which of two equal keys was queued first, the orientation
+of a triangle record, the slot a freed record is reused from.  Mirroring the
+input (x -> -x), swapping the axes, or reversing the segment list changes none
+of the geometry, and every coordinate stays exact, yet it changes those
+incidentals.  This script meshes each input and its re-expressions with
+Triangle (the `triangle` package) and reports the vertex counts, flagging the
+ones more than 2% (or 3 vertices) away from the original: the spread that any
+mesher not replaying Triangle byte for byte must expect.
+
+    python scripts/triangle_spread.py                      # samples and corpus, pq30
+    python scripts/triangle_spread.py --switches pq20 A.poly
+    python scripts/triangle_spread.py --markdown docs/compare/triangle-spread.md
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
+
+import triangle  # noqa: E402
+
+import ruppert_io  # noqa: E402
+
+DEFAULT_CORPUS = ROOT.parent / "shared" / "corpus"
+TRANSFORMS = ("mirror", "swap-xy", "reverse-segments")
+
+
+def default_inputs(corpus: Path) -> list[Path]:
+    data = Path(triangle.__file__).parent / "data"
+    samples = sorted(p for p in data.glob("*.poly"))
+    extra = sorted(corpus.glob("*.poly")) if corpus.is_dir() else []
+    return samples + extra
+
+
+def transformed(tri: dict, kind: str) -> dict:
+    """The same PSLG, re-expressed exactly."""
+    out = {k: np.array(v, copy=True) for k, v in tri.items()}
+    for key in ("vertices", "holes", "regions"):
+        if key in out:
+            if kind == "mirror":
+                out[key][:, 0] *= -1.0
+            elif kind == "swap-xy":
+                out[key][:, [0, 1]] = out[key][:, [1, 0]]
+    if kind == "reverse-segments" and "segments" in out:
+        out["segments"] = out["segments"][::-1].copy()
+        if "segment_markers" in out:
+            out["segment_markers"] = out["segment_markers"][::-1].copy()
+    return out
+
+
+def off(n: int, ref: int) -> bool:
+    return abs(n - ref) > max(3, 0.02 * ref)
+
+
+def spread(path: Path, switches: str) -> dict | None:
+    """Vertex counts of Triangle's meshes of ``path`` and its re-expressions,
+    or None if Triangle makes no mesh of it."""
+    try:
+        tri = {k: v for k, v in ruppert_io.read(path).items() if np.size(v)}
+    except ruppert_io.FormatError:
+        return None
+    opts = switches if "regions" in tri else switches.replace("A", "")
+    base = triangle.triangulate(tri, opts)
+    if "triangles" not in base:
+        return None
+    row = {"input": path.name, "switches": opts, "original": len(base["vertices"])}
+    for kind in TRANSFORMS:
+        row[kind] = len(triangle.triangulate(transformed(tri, kind), opts)["vertices"])
+    return row
+
+
+def markdown(rows: list[dict], switches: str) -> str:
+    lines = [
+        f"Triangle's vertex count under `{switches}` for each input and its exact re-expressions "
+        "(`*`: more than 2% or 3 vertices from the original).",
+        "",
+        "| input | original | " + " | ".join(TRANSFORMS) + " |",
+        "|---|---:|" + "---:|" * len(TRANSFORMS),
+    ]
+    for r in rows:
+        cells = [f"{r[k]}{'*' if off(r[k], r['original']) else ''}" for k in TRANSFORMS]
+        lines.append(f"| {r['input']} | {r['original']} | " + " | ".join(cells) + " |")
+    counts = {k: sum(off(r[k], r["original"]) for r in rows) for k in TRANSFORMS}
+    changed = sum(any(off(r[k], r["original"]) for k in TRANSFORMS) for r in rows)
+    lines += [
+        "",
+        f"Inputs off by more than 2%: " + ", ".join(f"{k} {n}" for k, n in counts.items())
+        + f"; under at least one re-expression: {changed} of {len(rows)}.",
+    ]
+    return "\n".join(lines) + "\n"
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("inputs", nargs="*", type=Path, help="Triangle-format .poly files (default: samples and corpus)")
+    ap.add_argument("--switches", default="pq30", help="Triangle switches (default pq30; A is dropped without regions)")
+    ap.add_argument("--corpus", type=Path, default=DEFAULT_CORPUS)
+    ap.add_argument("--markdown", type=Path, help="also write the table here")
+    args = ap.parse_args(argv)
+    rows = [r for p in (args.inputs or default_inputs(args.corpus)) if (r := spread(p, args.switches))]
+    text = markdown(rows, args.switches)
+    print(text, end="")
+    if args.markdown:
+        args.markdown.parent.mkdir(parents=True, exist_ok=True)
+        args.markdown.write_text(text)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
