@@ -34,6 +34,7 @@ from __future__ import annotations
 import contextlib
 import ctypes
 import ctypes.util
+import importlib
 import math
 import os
 import re
@@ -535,6 +536,16 @@ def _error(exc: BaseException) -> str:
     return f"{type(exc).__name__}: {text[0] if text else ''}".rstrip(": ")
 
 
+def _importable(row: Row, module: str) -> bool:
+    """Can ``module`` be imported?  If not, ``row`` says why."""
+    try:
+        importlib.import_module(module)
+    except ImportError as exc:
+        row.status, row.note = "unavailable", _error(exc)
+        return False
+    return True
+
+
 def compare(
     tri: dict,
     opts: str = "p",
@@ -572,11 +583,7 @@ def compare(
     tri_row = None
     if "triangle" in engines:
         tri_row = Row(name, opts, "triangle")
-        try:
-            import triangle  # noqa: F401
-        except ImportError as exc:
-            tri_row.status, tri_row.note = "unavailable", _error(exc)
-        else:
+        if _importable(tri_row, "triangle"):
             try:
                 out, tri_row.wall_s = run_triangle(tri, opts, repeat=repeat)
                 _fill_mesh(tri_row, out, keep_meshes)
@@ -615,11 +622,7 @@ def compare(
 
     if "cgal" in engines:
         row = Row(name, opts, "cgal")
-        try:
-            from CGAL import CGAL_Mesh_2  # noqa: F401
-        except ImportError as exc:
-            row.status, row.note = "unavailable", _error(exc)
-        else:
+        if _importable(row, "CGAL.CGAL_Mesh_2"):
             try:
                 mesh, row.wall_s, notes = run_cgal(tri, opts, repeat=repeat)
             except NotImplementedError as exc:

@@ -7,6 +7,10 @@ triangulation).  The walk stops when no edge separates the point, in a ghost
 triangle (the point is outside the convex hull) or at a mesh-boundary edge.
 Every walk is bounded; a walk that runs out of steps reports ``LOC_FAILED``
 and the caller falls back to a scan.
+
+Refinement locates its new points with ``precise_walk`` (Triangle's rule, so
+the same subsegments stop it as stop Triangle), falling back to
+``line_walk`` (the straight line from the triangle that wants the point).
 """
 
 from __future__ import annotations

@@ -141,12 +141,12 @@ def _presize(ms: Mesher, o: Options) -> None:
     it at once rather than doubling (and copying) a dozen times."""
     if not o.max_area > 0:
         return
+    from .check import mesh_area  # only here: the command's start-up does not need the checker
+
     m = ms.m
     n = int(m.size[S_NSLOT])
     c = m.corner[: 3 * n].reshape(-1, 3)
-    c = c[(m.stamp[:n] > 0) & (c.min(axis=1) >= 0)]
-    p, q, s = ms.m.xy[c[:, 0]], ms.m.xy[c[:, 1]], ms.m.xy[c[:, 2]]
-    area = 0.5 * float(np.abs((q[:, 0] - p[:, 0]) * (s[:, 1] - p[:, 1]) - (q[:, 1] - p[:, 1]) * (s[:, 0] - p[:, 0])).sum())
+    area = mesh_area({"vertices": m.xy, "triangles": c[(m.stamp[:n] > 0) & (c.min(axis=1) >= 0)]})  # no ghosts
     want = min(TRIANGLES_PER_AREA_BOUND * area / o.max_area, PRESIZE_LIMIT)
     if want > 2 * n:  # vertices: about half the triangles, and the free vertices Chew's rule deletes
         ms.grow(vertices=int(0.7 * want), triangles=int(want))

@@ -936,7 +936,7 @@ def _chew_delete(r, m, segs, vtri, work, e, state):
             f = e
         else:  # found afresh: deletions on the first side re-make e's triangle
             f = _edge(m, work, vtri, v, u, state)
-        if f < 0 or f == NO_EDGE:
+        if f < 0:  # (NO_EDGE too)
             continue
         if m.seg[lnext(f)] != NO_SEG or m.seg[lprev(f)] != NO_SEG:
             continue
@@ -1089,8 +1089,8 @@ def split_bad_triangle(r, m, segs, vmark, parent, vtri, work, h, state):
         work[C_DUPLICATE] += 1
         return DONE
     steps0 = work[C_WALK]
-    # Triangle's walk from its handle (t, 0), or (t, 2) when that puts the
-    # point on the inner side of the first edge
+    # Triangle's walk from the handle, or from the edge before it when that
+    # puts the point on the inner side of the first edge
     status, e = precise_walk(m, work, lprev(h) if eta < xi else h, px, py, m.stamp.shape[0] + 64)
     if status == LOC_FAILED:
         status, e = line_walk(m, work, t, px, py, 4 * m.stamp.shape[0] + 64)

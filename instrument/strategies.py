@@ -2,9 +2,10 @@
 
 Every strategy is one priority key per queued triangle (smaller is served
 first; ties go to the earlier entry), computed by ``priority`` inside the
-refinement kernel, so the hot loop never calls back into Python.  One binary
-heap then serves them all: Triangle's 4096 FIFO buckets are the key "bucket
-number, negated" with FIFO order inside a bucket.
+refinement kernel, so the hot loop never calls back into Python.  A binary
+heap serves them, except Triangle's order, whose key is its bucket number
+negated: that one is served from 4096 FIFO lists, as Triangle does
+(``refine.heap_push``), in the same order and in constant time.
 """
 
 from __future__ import annotations

@@ -40,6 +40,14 @@ def paper_r(alpha_deg: float) -> int:
     return r
 
 
+def paper_r_or_skip(n: int, alpha_deg: float) -> int:
+    """Equation (3)'s r, skipping the test when I(n) needs more than n points."""
+    r = paper_r(alpha_deg)
+    if n < r + 1:
+        pytest.skip("n too small for this angle")
+    return r
+
+
 def paper_h(n: int, r: int) -> float:
     """Equation (4)."""
     return 1 / (2 * n) * math.sqrt((2 * r + 1) * (2 * r - 1))
@@ -112,9 +120,7 @@ def with_steiner_points(n: int, k: int, alpha: float) -> dict:
 @pytest.mark.parametrize("alpha", ALPHAS + [1.0, 0.25, 19.99, 30.0, 33.0])
 @pytest.mark.parametrize("n", [31, 100, 1000])
 def test_params_are_equations_3_to_5(alpha, n):
-    r = paper_r(alpha)
-    if n < r + 1:
-        pytest.skip("n too small for this angle")
+    r = paper_r_or_skip(n, alpha)
     p = quadratic.params(n, alpha)
     assert (p.n, p.alpha_deg, p.r) == (n, alpha, r)
     assert quadratic.smallest_r(alpha) == r
@@ -154,9 +160,7 @@ def test_a_grows_linearly_with_n():
 @pytest.mark.parametrize("alpha", ALPHAS)
 @pytest.mark.parametrize("n", [7, 8, 50])
 def test_example_is_the_extended_input(n, alpha):
-    r = paper_r(alpha)
-    if n < r + 1:
-        pytest.skip("n too small for this angle")
+    r = paper_r_or_skip(n, alpha)
     h = paper_h(n, r)
     a = paper_a(h)
     d = quadratic.example(n, alpha)
@@ -274,9 +278,7 @@ def test_delta_0_is_in_the_delaunay_triangulation(n, alpha):
 @pytest.mark.parametrize("alpha", ALPHAS + [1.0])
 @pytest.mark.parametrize("n", [3, 10, 101])
 def test_delta_0_is_skinny(n, alpha):
-    r = paper_r(alpha)
-    if n < r + 1:
-        pytest.skip("n too small for this angle")
+    r = paper_r_or_skip(n, alpha)
     h = paper_h(n, r)
     corners = [(r / n, 0.0), ((r + 1) / n, 0.0), (1 / (2 * n), h)]
     np.testing.assert_allclose(quadratic.delta_points(n, 0, alpha), corners, rtol=1e-15)
@@ -393,9 +395,7 @@ def test_equation_8_needs_plus_in_the_tangent_subtraction_formula(alpha):
 @pytest.mark.parametrize("alpha", ALPHAS)
 @pytest.mark.parametrize("n", [3, 10, 1000])
 def test_equation_11_is_the_centre_height_not_the_radius(n, alpha):
-    r = paper_r(alpha)
-    if n < r + 1:
-        pytest.skip("n too small for this angle")
+    r = paper_r_or_skip(n, alpha)
     h = paper_h(n, r)
     a = paper_a(h)
     printed = (4 * (n - 1) ** 2 + 4 * h * h * n * n - 1) / (8 * h * n * n)  # (11)
