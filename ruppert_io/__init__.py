@@ -3,12 +3,13 @@
 ``read``/``write`` handle ``.node``, ``.poly``, ``.ele``, ``.area``, ``.edge``,
 ``.neigh`` (and write ``.v.node``, ``.v.edge``, ``.off``) exactly as Triangle 1.6
 reads and prints them, with the ``triangle`` package's dict keys.  Importing this
-package registers the meshio format ``"triangle"`` for ``.node``/``.ele``/``.poly``.
+package registers the meshio format ``"triangle"`` for ``.node``/``.ele``/``.poly``
+(when meshio itself is imported, so that the ``ruppert`` command need not load it).
 """
 
 from .api import Info, read, read_with_info, write, write_voronoi
 from .errors import FormatError
-from .meshio_plugin import from_meshio, register, to_meshio
+from .meshio_plugin import from_meshio, register, register_when_imported, to_meshio
 
 __all__ = [
     "FormatError",
@@ -21,4 +22,4 @@ __all__ = [
     "write_voronoi",
 ]
 
-register()
+register_when_imported()

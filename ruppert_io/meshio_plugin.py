@@ -11,21 +11,33 @@ and ``triangle:attr1..k`` (vertex markers and attributes); cell data
 and ``triangle:max_area`` (on the triangle block).  Blocks a name does not belong
 to get zeros.  Segments are a ``line`` cell block.  Holes, regions, edges and
 neighbours have no place in meshio that every writer accepts, so they are dropped.
+
+Importing meshio takes about 60 ms, a tenth of the ``ruppert`` command's start-up,
+so ``ruppert_io`` does not import it: ``register_when_imported()`` registers the
+format at once if meshio is already loaded, and otherwise right after meshio's own
+import, whoever triggers it.
 """
 
 from __future__ import annotations
 
+import importlib.abc
+import importlib.util
 import os
 import re
+import sys
 from collections.abc import Mapping
-from typing import Any
+from importlib.machinery import ModuleSpec
+from types import ModuleType
+from typing import TYPE_CHECKING, Any
 
-import meshio
 import numpy as np
 
 from . import _output, naming
 from .api import read_set, write
 from .errors import DimensionError
+
+if TYPE_CHECKING:
+    import meshio
 
 FORMAT = "triangle"
 EXTENSIONS = (".node", ".ele", ".poly")
@@ -41,12 +53,43 @@ _ATTR = re.compile(re.escape(PREFIX) + r"attr([1-9][0-9]*)$")
 
 def register() -> None:
     """Register the ``"triangle"`` format with meshio, ahead of TetGen (idempotent)."""
+    import meshio
+
     meshio.register_format(FORMAT, list(EXTENSIONS), _read, {FORMAT: _write})
     for ext in EXTENSIONS:
         formats = meshio.extension_to_filetypes[ext]
         while FORMAT in formats:
             formats.remove(FORMAT)
         formats.insert(0, FORMAT)
+
+
+def register_when_imported() -> None:
+    """``register()`` now if meshio is loaded, else as soon as it is imported."""
+    if "meshio" in sys.modules:
+        register()
+    elif not any(isinstance(f, _RegisterAfterImport) for f in sys.meta_path):
+        sys.meta_path.insert(0, _RegisterAfterImport())
+
+
+class _RegisterAfterImport(importlib.abc.MetaPathFinder, importlib.abc.Loader):
+    """A one-shot import hook: loads meshio with its own loader, then registers."""
+
+    def find_spec(self, name: str, path: Any = None, target: Any = None) -> ModuleSpec | None:
+        if name != "meshio":
+            return None
+        sys.meta_path.remove(self)
+        spec = importlib.util.find_spec(name)  # the finders that would have found it
+        if spec is not None and spec.loader is not None:
+            self._loader = spec.loader
+            spec.loader = self
+        return spec
+
+    def create_module(self, spec: ModuleSpec) -> ModuleType | None:
+        return self._loader.create_module(spec)
+
+    def exec_module(self, module: ModuleType) -> None:
+        self._loader.exec_module(module)
+        register()
 
 
 def _read(filename: str | os.PathLike[str]) -> meshio.Mesh:
@@ -57,6 +100,8 @@ def _read(filename: str | os.PathLike[str]) -> meshio.Mesh:
     try:
         mesh = read_set(files)
     except DimensionError as exc:
+        import meshio
+
         raise meshio.ReadError(str(exc)) from exc
     return to_meshio(mesh)
 
@@ -118,6 +163,8 @@ def to_meshio(mesh: Mapping[str, Any], *, pad_3d: bool = False) -> meshio.Mesh:
     attr = _output.get(mesh, "vertex_attributes", float, rows=n)
     for j in range(0 if attr is None else attr.shape[1]):
         point_data[f"{PREFIX}attr{j + 1}"] = attr[:, j]
+    import meshio
+
     return meshio.Mesh(points, blocks, point_data=point_data, cell_data=cell_data)
 
 

@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import subprocess
+import sys
+
 import meshio
 import numpy as np
 import pytest
@@ -27,6 +30,20 @@ def test_triangle_comes_before_tetgen():
     ruppert_io.meshio_plugin.register()  # idempotent
     assert meshio.extension_to_filetypes[".node"].count("triangle") == 1
     assert "tetgen" in meshio.extension_to_filetypes[".node"]
+
+
+@pytest.mark.parametrize("order", ["ruppert_io first", "meshio first"])
+def test_the_format_is_registered_whichever_is_imported_first(order):
+    """ruppert_io does not load meshio itself, yet meshio always knows the format."""
+    first, second = ("ruppert_io", "meshio") if order == "ruppert_io first" else ("meshio", "ruppert_io")
+    code = (
+        f"import sys, {first}\n"
+        "loaded = 'meshio' in sys.modules\n"
+        f"import {second}, meshio\n"
+        "print(loaded, meshio.extension_to_filetypes['.node'][0])\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.split() == [str(first == "meshio"), "triangle"]
 
 
 def test_meshio_reads_a_triangle_node_with_its_ele():
