@@ -452,11 +452,12 @@ def _split_at_crossing(m, work, segs, vmark, vtri, a, b, c, stack, parent, state
         return -1, False
     xy[nv, 0] = px
     xy[nv, 1] = py
-    parent[nv, 0] = right
-    parent[nv, 1] = left
-    parent[nv, 2] = right
-    parent[nv, 3] = t
-    parent[nv, 4] = 0.0
+    if nv < parent.shape[0]:  # the input has vertex attributes
+        parent[nv, 0] = right
+        parent[nv, 1] = left
+        parent[nv, 2] = right
+        parent[nv, 3] = t
+        parent[nv, 4] = 0.0
     m.size[S_NVERT] = nv + 1
     vmark[nv] = segs.marker[r]
     work[C_STEINER] += 1

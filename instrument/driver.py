@@ -144,7 +144,7 @@ def mesh_input(inp: dict, o: Options, work: np.ndarray, seed: int = 0) -> Mesher
     needs them: everything ``triangulate`` does before refining."""
     xy = inp["vertices"]
     spare = 2 * len(inp.get("segments", ())) + 16
-    ms = start(xy, inp["vertex_markers"], work, seed, spare)
+    ms = start(xy, inp["vertex_markers"], work, seed, spare, parents="vertex_attributes" in inp)
     for i in np.flatnonzero(ms.dup >= 0):
         ms.warnings.append(f"Warning:  A duplicate vertex at ({xy[i, 0]:.12g}, {xy[i, 1]:.12g}) appeared and was ignored.")
     if o.p:
@@ -200,10 +200,10 @@ def _assemble(ms: Mesher, inp: dict, o: Options) -> Result:
     if ms.dead is not None and ms.dead.size:
         keep[ms.dead] = False
     renumber = o.j or not keep.all()
-    new_id = np.cumsum(keep) - 1
+    new_id = (np.cumsum(keep) - 1).astype(np.int32)
 
     def ids(a):
-        return (new_id[a] if renumber else a).astype(np.int32, copy=False)
+        return np.take(new_id, a) if renumber else a.astype(np.int32, copy=False)
 
     out = Result()
     if not o.N:
@@ -218,8 +218,7 @@ def _assemble(ms: Mesher, inp: dict, o: Options) -> Result:
             _put(out, "triangle_attributes", ms.region_attr[tris].reshape(-1, 1))
     constrained = None
     if (o.p or o.c) and not o.P:
-        e = unique_edges(m, tris, tri_index)
-        constrained = e[m.seg[e] != NO_SEG]
+        constrained = unique_edges(m, tris, tri_index, constrained=True)
         # a subsegment made on triangle edge a -> b is listed b -> a (Triangle's order)
         _put(out, "segments", ids(edge_ends(m, constrained)[:, ::-1]))
         if not o.B:

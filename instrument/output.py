@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .mesh import NO_EDGE, Mesh
+from .mesh import NO_EDGE, NO_SEG, Mesh
 
 
 class Result(dict):
@@ -37,11 +37,20 @@ def _put(out: dict, key: str, arr: np.ndarray) -> None:
         out[key] = np.ascontiguousarray(arr)
 
 
-def unique_edges(m: Mesh, tris: np.ndarray, tri_index: np.ndarray) -> np.ndarray:
+# A triangle's edges in Triangle's listing order: (c0, c1), (c1, c2), (c2, c0).
+_LISTING = np.array([2, 0, 1])
+
+
+def unique_edges(m: Mesh, tris: np.ndarray, tri_index: np.ndarray, *, constrained: bool = False) -> np.ndarray:
     """Each edge once, as Triangle lists them: triangle by triangle, the edges
     (c0, c1), (c1, c2), (c2, c0) -- our edges 2, 0, 1 -- taking an edge when
-    its neighbour is absent or comes later."""
-    e = (3 * tris[:, None] + np.array([2, 0, 1])).ravel()
+    its neighbour is absent or comes later.  ``constrained``: subsegments only
+    (picked before the edge arrays are built: a few of millions)."""
+    if constrained:
+        rows, k = np.nonzero(m.seg.reshape(-1, 3)[tris][:, _LISTING] != NO_SEG)
+        e = 3 * tris[rows] + _LISTING[k]
+    else:
+        e = (3 * tris[:, None] + _LISTING).ravel()
     tw = m.twin[e]
     keep = (tw == NO_EDGE) | (tri_index[np.maximum(tw, 0) // 3] > tri_index[e // 3])
     return e[keep]

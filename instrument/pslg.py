@@ -27,7 +27,9 @@ class Mesher:
     n_input: int
     dup: np.ndarray  # duplicate_of for input vertices
     vmark: np.ndarray  # (V,) int32 vertex markers
-    parent: np.ndarray  # (V, 5) p0, p1, p2, s, t: a new vertex's attributes are a0 + s (a1 - a0) + t (a2 - a0)
+    # (V, 5) p0, p1, p2, s, t: a new vertex's attributes are a0 + s (a1 - a0) + t (a2 - a0);
+    # no rows when the input has no vertex attributes (40 bytes a vertex saved)
+    parent: np.ndarray
     segs: cdt.Segs
     vtri: np.ndarray  # (V,) int64 an edge leaving each vertex
     state: np.ndarray = field(default_factory=lambda: np.array([12345], dtype=np.int64))
@@ -55,7 +57,8 @@ class Mesher:
             m = grow_vertices(m, nv + vertices)
             cap = m.xy.shape[0]
             self.vmark = _widen(self.vmark, cap, 0)
-            self.parent = _widen(self.parent, cap, -1.0)
+            if self.parent.shape[0]:
+                self.parent = _widen(self.parent, cap, -1.0)
             self.vtri = _widen(self.vtri, cap, -1)
         if spare_triangles(m) < triangles:
             m = grow_triangles(m, m.stamp.shape[0] + triangles)
@@ -70,8 +73,11 @@ def _widen(a: np.ndarray, n: int, fill) -> np.ndarray:
     return out
 
 
-def start(xy: np.ndarray, markers: np.ndarray, work: np.ndarray, seed: int, spare_vertices: int) -> Mesher:
-    """Delaunay-triangulate the input vertices, with room for more."""
+def start(
+    xy: np.ndarray, markers: np.ndarray, work: np.ndarray, seed: int, spare_vertices: int, parents: bool = True
+) -> Mesher:
+    """Delaunay-triangulate the input vertices, with room for more; ``parents``:
+    record what each new vertex's attributes interpolate."""
     n = xy.shape[0]
     spare = max(spare_vertices, 16)
     m, dup = delaunay(xy, work, seed=seed, extra_vertices=spare, extra_triangles=2 * spare)
@@ -84,7 +90,7 @@ def start(xy: np.ndarray, markers: np.ndarray, work: np.ndarray, seed: int, spar
         n_input=n,
         dup=dup,
         vmark=vmark,
-        parent=np.full((cap, 5), -1.0),
+        parent=np.full((cap if parents else 0, 5), -1.0),
         segs=cdt.new_segs(max(16, 2 * spare_vertices)),
         vtri=np.full(cap, -1, dtype=np.int64),
         n_triangles_initial=int(m.size[3]),

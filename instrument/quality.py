@@ -53,8 +53,9 @@ def _new_refiner(
     par[rf.P_OFFCONSTANT] = 0.475 * math.sqrt((1.0 + math.cos(theta)) / (1.0 - math.cos(theta))) if theta > 0 else 0.0
     par[rf.P_MAXAREA] = o.max_area
     vtype = np.zeros(nvcap, dtype=np.int8)
-    area = ms.region_area if ms.region_area is not None else np.full(slots, -1.0)
-    attr = ms.region_attr if ms.region_attr is not None else np.zeros(slots)
+    # per-slot bounds and attributes only where there are some: 16 bytes a triangle otherwise
+    area = ms.region_area if ms.region_area is not None else np.zeros(0)
+    attr = ms.region_attr if ms.region_attr is not None else np.zeros(0)
     return rf.Refiner(
         ipar=ipar,
         par=par,
@@ -98,7 +99,7 @@ def _grow(ms: Mesher, r: rf.Refiner) -> rf.Refiner:
     per_vertex = {"vtype": 0, "vslot": -1}
     per_slot = {"area": -1.0, "attr": 0.0, "cav": 0, "fan": 0, "seen": 0, "bnd": 0, "bval": 0.0}
     grown |= {k: _widen(getattr(r, k), nvcap, fill) for k, fill in per_vertex.items() if getattr(r, k).shape[0] < nvcap}
-    grown |= {k: _widen(getattr(r, k), slots, fill) for k, fill in per_slot.items() if getattr(r, k).shape[0] < slots}
+    grown |= {k: _widen(getattr(r, k), slots, fill) for k, fill in per_slot.items() if 0 < getattr(r, k).shape[0] < slots}
     return r._replace(**grown)
 
 
@@ -201,7 +202,8 @@ def finish(ms: Mesher, r: rf.Refiner, user: Callable | None = None) -> rf.Refine
                 f"  (segment ({xy[a, 0]:.12g}, {xy[a, 1]:.12g}) to ({xy[b, 0]:.12g}, {xy[b, 1]:.12g}))"
             )
         r = _grow(ms, r)
-    ms.region_area = r.area
+    if ms.region_area is not None:
+        ms.region_area = r.area
     if ms.region_attr is not None:
         ms.region_attr = r.attr
     ms.dead = np.flatnonzero(r.vtype[: ms.n_vertices] == rf.V_DEAD)

@@ -412,7 +412,7 @@ def reconstruct(tri: dict, inp: dict, o: Options, work: np.ndarray, seed: int = 
         n_input=n,
         dup=np.full(n, -1, dtype=np.int64),
         vmark=vmark,
-        parent=np.full((cap, 5), -1.0),
+        parent=np.full((cap if "vertex_attributes" in inp else 0, 5), -1.0),
         segs=cdt.new_segs(nseg + nboundary + 16),
         vtri=np.full(cap, -1, dtype=np.int64),
         state=np.array([seed * 2654435761 + 12345], dtype=np.int64),

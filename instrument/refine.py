@@ -133,8 +133,8 @@ class Refiner(NamedTuple):
     ipar: np.ndarray  # (I_NPAR,) int64
     par: np.ndarray  # (P_NPAR,) float64
     vtype: np.ndarray  # (V,) int8 V_*
-    area: np.ndarray  # (T,) float64 area bound per triangle slot, <= 0 none
-    attr: np.ndarray  # (T,) float64 regional attribute per triangle slot
+    area: np.ndarray  # (T,) float64 area bound per triangle slot, <= 0 none (no rows: no bounds)
+    attr: np.ndarray  # (T,) float64 regional attribute per triangle slot (no rows: no attributes)
     hkey: np.ndarray  # (H,) queued bad triangles: key,
     hseq: np.ndarray  # insertion number (ties: earlier first; the bucket queue: next entry),
     htri: np.ndarray  # triangle slot,
@@ -508,7 +508,7 @@ def test_triangle(r, m, segs, vtri, work, t, state):
     bad = False
     if r.ipar[I_FIXAREA] and 0.5 * area2 > r.par[P_MAXAREA]:
         bad = True
-    if not bad and r.ipar[I_VARAREA] and r.area[t] > 0.0 and 0.5 * area2 > r.area[t]:
+    if not bad and r.ipar[I_VARAREA] and r.area.shape[0] and r.area[t] > 0.0 and 0.5 * area2 > r.area[t]:
         bad = True
     if not bad and r.ipar[I_USER] == 1 and builtin_unsuitable(xy, a, b, c):
         bad = True
@@ -638,8 +638,10 @@ def _cavity(r, m, work, px, py, t0, t1, skip):
             r.bnd[nb, 2] = m.corner[lprev(e)]
             r.bnd[nb, 3] = m.seg[e]
             r.bnd[nb, 4] = e
-            r.bval[nb, 0] = r.area[t]
-            r.bval[nb, 1] = r.attr[t]
+            if r.area.shape[0]:
+                r.bval[nb, 0] = r.area[t]
+            if r.attr.shape[0]:
+                r.bval[nb, 1] = r.attr[t]
             nb += 1
     for j in range(tested, cav.shape[0]):
         r.seen[cav[j]] = 0
@@ -709,8 +711,10 @@ def _fill_cavity(r, m, work, vtri, p, n, nb):
         m.twin[3 * t + 2] = NO_EDGE
         m.seg[3 * t + 1] = NO_SEG
         m.seg[3 * t + 2] = NO_SEG
-        r.area[t] = r.bval[j, 0]
-        r.attr[t] = r.bval[j, 1]
+        if r.area.shape[0]:
+            r.area[t] = r.bval[j, 0]
+        if r.attr.shape[0]:
+            r.attr[t] = r.bval[j, 1]
         r.vslot[u] = t
         r.fan[j] = t
         _remember(m, vtri, t)
@@ -766,11 +770,12 @@ def _new_vertex(m, r, vmark, parent, px, py, kind, marker, p0, p1, p2, s, t):
     m.xy[v, 1] = py
     r.vtype[v] = kind
     vmark[v] = marker
-    parent[v, 0] = p0
-    parent[v, 1] = p1
-    parent[v, 2] = p2
-    parent[v, 3] = s
-    parent[v, 4] = t
+    if v < parent.shape[0]:  # the input has vertex attributes
+        parent[v, 0] = p0
+        parent[v, 1] = p1
+        parent[v, 2] = p2
+        parent[v, 3] = s
+        parent[v, 4] = t
     return v
 
 
@@ -873,8 +878,10 @@ def delete_free_vertex(r, m, segs, vtri, work, v, state):
         outer[d] = m.twin[lnext(e)]  # edge dest -> apex, opposite v
         rec[d] = m.seg[lnext(e)]
         tris[d] = t
-        area[d] = r.area[t]
-        attr[d] = r.attr[t]
+        if r.area.shape[0]:
+            area[d] = r.area[t]
+        if r.attr.shape[0]:
+            attr[d] = r.attr[t]
         d += 1
         nxt = m.twin[lprev(e)]
         if nxt == NO_EDGE:
@@ -913,8 +920,10 @@ def delete_free_vertex(r, m, segs, vtri, work, v, state):
     bond(m, root, base_outer)
     m.seg[root] = base_seg
     for i in range(made):
-        r.area[r.fan[i]] = area0
-        r.attr[r.fan[i]] = attr0
+        if r.area.shape[0]:
+            r.area[r.fan[i]] = area0
+        if r.attr.shape[0]:
+            r.attr[r.fan[i]] = attr0
     r.vtype[v] = V_DEAD
     work[C_DELETED_VERTEX] += 1
     _trace(r, T_DELETED, made, d, 0, r.ipar[I_HSIZE])
