@@ -24,9 +24,13 @@ class PrecisionError(RuntimeError):
     """Triangle's "Ran out of precision" failure: segments too short to split."""
 
 
-def _new_refiner(
+def new_refiner(
     ms: Mesher, o: Options, strategy: str, steiner: str, trace: bool, python_test: bool = False
 ) -> rf.Refiner:
+    """The refinement kernel's state for mesh ``ms`` under switches ``o``: every
+    vertex so far an input vertex, the queues empty (``rf.tally_encroached``
+    and ``finish`` fill them).  ``python_test``: a Python ``triunsuitable``
+    runs between kernel rounds, so the kernel's own ``-u`` test stays off."""
     m = ms.m
     slots = m.stamp.shape[0]
     nvcap = m.xy.shape[0]
@@ -78,8 +82,9 @@ def _new_refiner(
     )
 
 
-def _grow(ms: Mesher, r: rf.Refiner) -> rf.Refiner:
-    """Grow (doubling) whatever the kernel ran out of, and only that."""
+def grow_refiner(ms: Mesher, r: rf.Refiner) -> rf.Refiner:
+    """After the kernel's NEED_ROOM: grow (doubling) whatever it ran out of,
+    and only that, in the mesh and in ``r``; returns the grown refiner."""
     need = max(64, int(r.ipar[rf.I_NEED]))
     r.ipar[rf.I_NEED] = 0
     ms.grow(vertices=16, triangles=need, records=16)
@@ -124,7 +129,7 @@ def run(
         return np.zeros(0, dtype=TRACE_DTYPE) if trace else None
     user = triunsuitable if o.u else None
     _presize(ms, o)
-    r = _new_refiner(ms, o, strategy, steiner, trace, user is not None)  # every vertex so far: V_INPUT (0)
+    r = new_refiner(ms, o, strategy, steiner, trace, user is not None)  # every vertex so far: V_INPUT (0)
     cdt.build_vertex_edges(ms.m, ms.vtri)
     rf.tally_encroached(r, ms.m, ms.segs)
     r = finish(ms, r, user)
@@ -183,7 +188,7 @@ def finish(ms: Mesher, r: rf.Refiner, user: Callable | None = None) -> rf.Refine
         if status == rf.DONE and user is not None and r.ipar[rf.I_BUDGET] != 0:
             judged, bad = _judge(ms.m, user, judged)
             while r.hkey.shape[0] < int(r.ipar[rf.I_HSIZE]) + bad.shape[0] + 16:
-                r = _grow(ms, r)
+                r = grow_refiner(ms, r)
             rf.queue_triangles(r, ms.m, ms.work, bad, ms.state)
             if bad.shape[0]:
                 continue
@@ -201,7 +206,7 @@ def finish(ms: Mesher, r: rf.Refiner, user: Callable | None = None) -> rf.Refine
                 f"  floating point arithmetic.\n"
                 f"  (segment ({xy[a, 0]:.12g}, {xy[a, 1]:.12g}) to ({xy[b, 0]:.12g}, {xy[b, 1]:.12g}))"
             )
-        r = _grow(ms, r)
+        r = grow_refiner(ms, r)
     if ms.region_area is not None:
         ms.region_area = r.area
     if ms.region_attr is not None:

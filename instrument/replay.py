@@ -8,7 +8,7 @@ lets a strategy finish the refinement:
 
 1. the pipeline of ``triangulate(example(n), "pq<alpha>")`` up to the
    refinement: Delaunay triangulation, the eight box subsegments, the
-   refinement state (``quality._new_refiner``), the encroachment tally
+   refinement state (``quality.new_refiner``), the encroachment tally
    (which must find nothing: Theorem 3's proof);
 2. the scripted phase: for k = 0, 1, ..., find Δ_k = (C, D, P_k) in the mesh
    and split it with the engine's own ``split_bad_triangle`` (walk, cavity,
@@ -181,7 +181,7 @@ def replay(
     if int(ms.m.size[S_NVERT]) != n + 12 or int(work[counters.C_STEINER]):
         raise ReplayError("the extended input did not triangulate to its own n + 12 vertices")
 
-    r = ql._new_refiner(ms, o, then or "fifo", "circumcenter", False)
+    r = ql.new_refiner(ms, o, then or "fifo", "circumcenter", False)
     r.ipar[rf.I_STRATEGY] = FIFO  # cheap keys while the heap is unused
     cdt.build_vertex_edges(ms.m, ms.vtri)
     rf.tally_encroached(r, ms.m, ms.segs)
@@ -224,7 +224,7 @@ def replay(
             )
             if status != rf.NEED_ROOM:
                 break
-            r = ql._grow(ms, r)
+            r = ql.grow_refiner(ms, r)
         if status == NOT_FOUND:
             raise ReplayError(f"Lemma 2, step {k}: Delta_{k} = ({c}, {d}, P_{k}) is not in the mesh")
         m = ms.m

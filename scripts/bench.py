@@ -554,11 +554,11 @@ PROFILED = {
     ("instrument.driver", "recover_segments"): "segment recovery (CDT kernel)",
     ("instrument.driver", "carve"): "holes, concavities, regions",
     ("instrument.driver", "enclose_hull"): "enclose hull",
-    ("instrument.quality", "_new_refiner"): "refinement setup (allocate arrays)",
+    ("instrument.quality", "new_refiner"): "refinement setup (allocate arrays)",
     ("instrument.cdt", "build_vertex_edges"): "refinement setup (vertex -> edge map kernel)",
     ("instrument.refine", "tally_encroached"): "refinement setup (encroached subsegments kernel)",
     ("instrument.refine", "refine"): "refinement kernel",
-    ("instrument.quality", "_grow"): "refinement: growing arrays",
+    ("instrument.quality", "grow_refiner"): "refinement: growing arrays",
     ("instrument.driver", "_assemble"): "output assembly (_assemble)",
 }
 
