@@ -102,9 +102,16 @@ def grow_refiner(ms: Mesher, r: rf.Refiner) -> rf.Refiner:
     if trace.shape[0] and r.ipar[rf.I_NTRACE] + 64 > trace.shape[0]:
         grown["trace"] = _widen(trace, 2 * trace.shape[0], 0)
     per_vertex = {"vtype": 0, "vslot": -1}
-    per_slot = {"area": -1.0, "attr": 0.0, "cav": 0, "fan": 0, "seen": 0, "bnd": 0, "bval": 0.0}
+    per_slot = {"area": -1.0, "attr": 0.0}
     grown |= {k: _widen(getattr(r, k), nvcap, fill) for k, fill in per_vertex.items() if getattr(r, k).shape[0] < nvcap}
     grown |= {k: _widen(getattr(r, k), slots, fill) for k, fill in per_slot.items() if 0 < getattr(r, k).shape[0] < slots}
+    # Cavity scratch holds nothing between steps (a NEED_ROOM step changed
+    # nothing and starts again), and ``seen`` is all zero then: fresh zeros,
+    # which the OS maps lazily, instead of copies that touch every page.
+    for k in ("cav", "fan", "seen", "bnd", "bval"):
+        a = getattr(r, k)
+        if a.shape[0] < slots:
+            grown[k] = np.zeros((slots,) + a.shape[1:], dtype=a.dtype)
     return r._replace(**grown)
 
 
