@@ -840,10 +840,13 @@ n − r(k+1) triangles is built again, n/r times over.
   was not investigated here.
 * **Our `smallest`** (smallest circumradius first) picks Δ_k every time: it
   plays the script, and is quadratic.  Our **`triangle`** strategy has
-  Triangle's keys but not its order among equal keys (the engine queues a new
-  fan in the order its cavity was searched, and the initial triangles in slot
-  order), so it does not play the script: the same rule with another tie order
-  does linear instead of quadratic work.
+  Triangle's keys and, for the triangles refinement makes, its order among
+  equal keys (a new vertex's triangles are queued counter-clockwise from the
+  edge Triangle's flips start at); only the initial triangles are queued in
+  slot order instead of Triangle's pool order.  It does not insert the scripted
+  points (the column "P_k in output"), yet its work is quadratic too (the
+  slopes table); how its order rebuilds long fans without the scripted
+  points was not investigated.
 * **The least-work strategy** serves the far end of a fan first.  The skinniest
   triangle of a fan is the one whose bottom edge is farthest from the apex; its
   new point (the off-center, 0.475·cot(α/2)/n above that edge, far closer than
