@@ -391,29 +391,11 @@ def theorem3_bound(n: int, alpha_deg: float = 20.0) -> float:
     return n * n / (2 * p.r) - 2 * n
 
 
-def replay(
-    n: int,
-    alpha_deg: float = 20.0,
-    *,
-    then: str | None = "triangle",
-    steiner: str = "offcenter",
-    seed: int = 0,
-    stop_after: int | None = None,
-):
-    """Theorem 3 on the engine: split Δ_0, Δ_1, ... in order, then finish with ``then``.
+def __getattr__(name: str):
+    """``quadratic.replay`` is ``instrument.replay.replay`` (Theorem 3 on the
+    engine), loaded on first use: that module imports this one."""
+    if name == "replay":
+        from .replay import replay
 
-    Starts from the triangulation of the extended input (:func:`example`), splits
-    Δ_k for k = 0 .. :func:`steps` - 1 (inserting their circumcenters P_1, P_2, ...,
-    vertex ``n + 12 + k`` for step k), verifying Lemma 1 (Δ_k is in the mesh and
-    skinny, the new point is ((k+1) r/n + 1/(2n), h), CDS is congruent to ABP) and
-    Lemma 2 (the broom of the new point is in the mesh) at every step, then lets
-    strategy ``then`` finish the refinement to ``alpha_deg`` (``None``: stop after
-    the script).  Returns a ``Result`` whose ``steps`` holds the triangles created
-    at each scripted step and ``work`` the engine's counters; ``scripted_work``
-    has the counters of the scripted phase alone.  Raises
-    ``instrument.replay.ReplayError`` where the mesh departs from the paper.
-    See ``instrument.replay.replay`` for the other keywords.
-    """
-    from .replay import replay as _replay
-
-    return _replay(n, alpha_deg, then=then, steiner=steiner, seed=seed, stop_after=stop_after)
+        return replay
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -42,7 +42,7 @@ from .counters import (
     C_UNDONE,
     C_WALK,
 )
-from .jit import kernel
+from .jit import kernel, kernel_inline
 from .locate import (
     LOC_BLOCKED,
     LOC_INSIDE,
@@ -485,6 +485,23 @@ def builtin_unsuitable(xy, o, d, a):
     return max(od, da, ao) > 0.05 * (xy[o, 0] ** 2 + xy[o, 1] ** 2) + 0.02
 
 
+@kernel_inline
+def _bounds(r, t):
+    """Triangle slot ``t``'s area bound and regional attribute, which a new
+    triangle inherits: (-1, 0) when the run has none (the arrays have no rows)."""
+    area = r.area[t] if r.area.shape[0] else -1.0
+    attr = r.attr[t] if r.attr.shape[0] else 0.0
+    return area, attr
+
+
+@kernel_inline
+def _set_bounds(r, t, area, attr):
+    if r.area.shape[0]:
+        r.area[t] = area
+    if r.attr.shape[0]:
+        r.attr[t] = attr
+
+
 @kernel
 def _queue(r, m, work, t, mn, cos2, circ2, state):
     """Put bad triangle ``t`` on the heap under the strategy's priority."""
@@ -508,7 +525,8 @@ def test_triangle(r, m, segs, vtri, work, t, state):
     bad = False
     if r.ipar[I_FIXAREA] and 0.5 * area2 > r.par[P_MAXAREA]:
         bad = True
-    if not bad and r.ipar[I_VARAREA] and r.area.shape[0] and r.area[t] > 0.0 and 0.5 * area2 > r.area[t]:
+    bound = _bounds(r, t)[0]
+    if not bad and r.ipar[I_VARAREA] and bound > 0.0 and 0.5 * area2 > bound:
         bad = True
     if not bad and r.ipar[I_USER] == 1 and builtin_unsuitable(xy, a, b, c):
         bad = True
@@ -638,10 +656,7 @@ def _cavity(r, m, work, px, py, t0, t1, skip):
             r.bnd[nb, 2] = m.corner[lprev(e)]
             r.bnd[nb, 3] = m.seg[e]
             r.bnd[nb, 4] = e
-            if r.area.shape[0]:
-                r.bval[nb, 0] = r.area[t]
-            if r.attr.shape[0]:
-                r.bval[nb, 1] = r.attr[t]
+            r.bval[nb, 0], r.bval[nb, 1] = _bounds(r, t)
             nb += 1
     for j in range(tested, cav.shape[0]):
         r.seen[cav[j]] = 0
@@ -711,10 +726,7 @@ def _fill_cavity(r, m, work, vtri, p, n, nb):
         m.twin[3 * t + 2] = NO_EDGE
         m.seg[3 * t + 1] = NO_SEG
         m.seg[3 * t + 2] = NO_SEG
-        if r.area.shape[0]:
-            r.area[t] = r.bval[j, 0]
-        if r.attr.shape[0]:
-            r.attr[t] = r.bval[j, 1]
+        _set_bounds(r, t, r.bval[j, 0], r.bval[j, 1])
         r.vslot[u] = t
         r.fan[j] = t
         _remember(m, vtri, t)
@@ -878,10 +890,7 @@ def delete_free_vertex(r, m, segs, vtri, work, v, state):
         outer[d] = m.twin[lnext(e)]  # edge dest -> apex, opposite v
         rec[d] = m.seg[lnext(e)]
         tris[d] = t
-        if r.area.shape[0]:
-            area[d] = r.area[t]
-        if r.attr.shape[0]:
-            attr[d] = r.attr[t]
+        area[d], attr[d] = _bounds(r, t)
         d += 1
         nxt = m.twin[lprev(e)]
         if nxt == NO_EDGE:
@@ -920,10 +929,7 @@ def delete_free_vertex(r, m, segs, vtri, work, v, state):
     bond(m, root, base_outer)
     m.seg[root] = base_seg
     for i in range(made):
-        if r.area.shape[0]:
-            r.area[r.fan[i]] = area0
-        if r.attr.shape[0]:
-            r.attr[r.fan[i]] = attr0
+        _set_bounds(r, r.fan[i], area0, attr0)
     r.vtype[v] = V_DEAD
     work[C_DELETED_VERTEX] += 1
     _trace(r, T_DELETED, made, d, 0, r.ipar[I_HSIZE])
