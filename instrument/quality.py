@@ -48,7 +48,6 @@ def new_refiner(
     ipar[rf.I_CURRENT] = -1
     ipar[rf.I_EFREE] = -1
     ipar[rf.I_BTOP] = -1
-    ipar[rf.I_BFREE] = -1
     theta = math.radians(o.min_angle) if o.q else 0.0
     good = math.cos(theta) ** 2
     par[rf.P_GOODANGLE] = good
@@ -92,7 +91,9 @@ def grow_refiner(ms: Mesher, r: rf.Refiner) -> rf.Refiner:
     nvcap = ms.m.xy.shape[0]
     grown = {}
     heap = r.hkey.shape[0]
-    if heap < int(r.ipar[rf.I_HSIZE]) + need or heap < slots + 16:
+    if heap < rf.queue_used(r) + need:  # stale and served entries first
+        rf.heap_compact(r, ms.m)
+    if heap < rf.queue_used(r) + need or heap < slots + 16:
         heap = max(2 * heap, slots + 16)
         grown |= {k: _widen(getattr(r, k), heap, 0) for k in ("hkey", "hseq", "htri", "hstamp")}
     enc = r.enc.shape[0]
@@ -194,7 +195,7 @@ def finish(ms: Mesher, r: rf.Refiner, user: Callable | None = None) -> rf.Refine
         status = rf.refine(r, ms.m, ms.segs, ms.vmark, ms.parent, ms.vtri, ms.work, ms.state)
         if status == rf.DONE and user is not None and r.ipar[rf.I_BUDGET] != 0:
             judged, bad = _judge(ms.m, user, judged)
-            while r.hkey.shape[0] < int(r.ipar[rf.I_HSIZE]) + bad.shape[0] + 16:
+            while r.hkey.shape[0] < rf.queue_used(r) + bad.shape[0] + 16:
                 r = grow_refiner(ms, r)
             rf.queue_triangles(r, ms.m, ms.work, bad, ms.state)
             if bad.shape[0]:

@@ -113,9 +113,8 @@ I_NEED = 22  # with NEED_ROOM: the triangles (and queue entries) one step needs
 I_HLIMIT = 23  # compact the heap when it grows past this (twice its size after the last compaction)
 I_EBUSY = 24  # split_encroached is under way (resume at I_ECURSOR); else it starts a pass at slot 0
 I_BTOP = 25  # bucket queue (strategy triangle): the highest non-empty bucket, -1 none
-I_BFREE = 26  # bucket queue: a free entry, -1 none (free entries chain through hseq)
-I_BFRESH = 27  # bucket queue: entries ever used
-I_NPAR = 28
+I_BLOG = 26  # bucket queue: entries in its log (live, served and stale)
+I_NPAR = 27
 
 NBUCKETS = 4096
 
@@ -154,14 +153,28 @@ class Refiner(NamedTuple):
 #
 # The bad triangles wait in a binary heap ordered by (key, insertion number),
 # except under strategy "triangle", whose keys are Triangle's 4096 bucket
-# numbers: there, as in Triangle, a FIFO list per bucket (entries linked
-# through ``hseq``) queues and serves in constant time.  Both orders are the
-# same; the buckets are just faster.
+# numbers: there, as in Triangle, a FIFO list per bucket queues and serves in
+# constant time.  Both orders are the same; the buckets are just faster.
+#
+# The bucket lists live in an append-only log (entries linked through
+# ``hseq``; -1 ends a list, POPPED marks an entry served): a push writes the
+# next entry in order, so the writes stream through memory, and a
+# compaction is one sweep in log order, which within a bucket is FIFO order.
+# (A free list of served entries made every push a cache miss.)
+
+POPPED = -2
 
 
-@kernel
+@kernel_inline
 def _bucketed(r):
     return r.ipar[I_STRATEGY] == TRIANGLE
+
+
+@kernel_inline
+def queue_used(r):
+    """Queue entries in use: the heap's size, or the bucket log's length
+    (served and stale entries included, until a compaction)."""
+    return r.ipar[I_BLOG] if _bucketed(r) else r.ipar[I_HSIZE]
 
 
 @kernel
@@ -169,8 +182,7 @@ def queue_clear(r):
     """Empty the queue."""
     r.ipar[I_HSIZE] = 0
     r.ipar[I_BTOP] = -1
-    r.ipar[I_BFREE] = -1
-    r.ipar[I_BFRESH] = 0
+    r.ipar[I_BLOG] = 0
     r.bucket[:, :] = -1
 
 
@@ -189,7 +201,7 @@ def _heap_swap(r, i, j):
     r.hstamp[i], r.hstamp[j] = r.hstamp[j], r.hstamp[i]
 
 
-@kernel
+@kernel_inline
 def _bucket_append(r, i):
     """Link entry ``i`` at the tail of its bucket (key = -bucket)."""
     b = int(-r.hkey[i])
@@ -204,16 +216,12 @@ def _bucket_append(r, i):
         r.ipar[I_BTOP] = b
 
 
-@kernel
+@kernel_inline
 def heap_push(r, key, t, stamp):
     """Queue triangle ``t`` (the caller made sure there is room)."""
     if _bucketed(r):
-        i = r.ipar[I_BFREE]
-        if i >= 0:
-            r.ipar[I_BFREE] = r.hseq[i]
-        else:
-            i = r.ipar[I_BFRESH]
-            r.ipar[I_BFRESH] = i + 1
+        i = r.ipar[I_BLOG]
+        r.ipar[I_BLOG] = i + 1
         r.ipar[I_HSIZE] += 1
         r.ipar[I_SEQ] += 1
         r.hkey[i] = key
@@ -253,7 +261,7 @@ def _sift_down(r, i, n):
 @kernel
 def heap_pop(r):
     """Take the first entry off the queue and return its slot, whose fields
-    stay readable until the next push."""
+    stay readable until the next push (the next compaction for buckets)."""
     n = r.ipar[I_HSIZE] - 1
     r.ipar[I_HSIZE] = n
     if _bucketed(r):
@@ -266,8 +274,7 @@ def heap_pop(r):
             while b >= 0 and r.bucket[0, b] < 0:
                 b -= 1
             r.ipar[I_BTOP] = b
-        r.hseq[i] = r.ipar[I_BFREE]
-        r.ipar[I_BFREE] = i
+        r.hseq[i] = POPPED
         return i
     _heap_swap(r, 0, n)
     _sift_down(r, 0, n)
@@ -281,22 +288,18 @@ def heap_compact(r, m):
     re-queues the same region (``smallest`` on I(n)) keeps quadratically
     many dead entries."""
     if _bucketed(r):
-        live = 0
+        r.bucket[:, :] = -1
         r.ipar[I_BTOP] = -1
-        for b in range(NBUCKETS):
-            i = r.bucket[0, b]
-            r.bucket[0, b] = -1
-            r.bucket[1, b] = -1
-            while i >= 0:
-                nxt = r.hseq[i]
-                if m.stamp[r.htri[i]] == r.hstamp[i]:
-                    _bucket_append(r, i)
-                    live += 1
-                else:
-                    r.hseq[i] = r.ipar[I_BFREE]
-                    r.ipar[I_BFREE] = i
-                i = nxt
-        r.ipar[I_HSIZE] = live
+        n = 0
+        for i in range(r.ipar[I_BLOG]):
+            if r.hseq[i] != POPPED and m.stamp[r.htri[i]] == r.hstamp[i]:
+                r.hkey[n] = r.hkey[i]
+                r.htri[n] = r.htri[i]
+                r.hstamp[n] = r.hstamp[i]
+                _bucket_append(r, n)
+                n += 1
+        r.ipar[I_BLOG] = n
+        r.ipar[I_HSIZE] = n
         return
     # (key, insertion number) orders entries totally: rebuilding the heap
     # leaves the pop order of the rest unchanged
@@ -313,12 +316,12 @@ def heap_compact(r, m):
         _sift_down(r, i, n)
 
 
-@kernel
+@kernel_inline
 def _enc_len(r):
     return r.ipar[I_ELIVE]
 
 
-@kernel
+@kernel_inline
 def _enc_push(r, m, e):
     """Queue subsegment edge ``e``, by its ends and by its id: the id finds it
     even at a vertex where two parts of the domain touch (rotating about
@@ -364,7 +367,7 @@ def _enc_edge(r, m, work, vtri, i, state):
 # ------------------------------------------------------------- encroachment
 
 
-@kernel
+@kernel_inline
 def _in_lens(r, xy, e0, e1, ax, ay):
     """Does the point (ax, ay) lie in the diametral lens (or circle with -D)
     of ``e0 e1``?"""
@@ -378,14 +381,14 @@ def _in_lens(r, xy, e0, e1, ax, ay):
     return dot * dot >= r.par[P_LENS] * (ux * ux + uy * uy) * (vx * vx + vy * vy)
 
 
-@kernel
+@kernel_inline
 def _may_split(r, m, e):
     """-Y keeps boundary subsegments whole, -YY every subsegment."""
     y = r.ipar[I_Y]
     return y == 0 or (y == 1 and m.twin[e] != NO_EDGE)
 
 
-@kernel
+@kernel_inline
 def _queue_side(r, m, e, hit):
     """Queue subsegment edge ``e`` (whose own apex encroaches if ``hit``) on
     an encroaching side: the other side if its apex encroaches, as Triangle
@@ -402,7 +405,7 @@ def _queue_side(r, m, e, hit):
     return hit
 
 
-@kernel
+@kernel_inline
 def check_subsegment(r, m, e):
     """Queue subsegment edge ``e`` if an apex on either side encroaches it."""
     a = m.corner[e]
@@ -502,7 +505,7 @@ def _set_bounds(r, t, area, attr):
         r.attr[t] = attr
 
 
-@kernel
+@kernel_inline
 def _queue(r, m, work, t, mn, cos2, circ2, state):
     """Put bad triangle ``t`` on the heap under the strategy's priority."""
     strategy = r.ipar[I_STRATEGY]
@@ -515,7 +518,7 @@ def _queue(r, m, work, t, mn, cos2, circ2, state):
     heap_push(r, key, t, m.stamp[t])
 
 
-@kernel
+@kernel_inline
 def test_triangle(r, m, segs, vtri, work, t, state):
     """Queue triangle ``t`` if it is too big or too skinny (Triangle's
     ``testtriangle``); the caller made sure the heap has room."""
@@ -748,7 +751,7 @@ def _room(r, m, nb):
     ok = (
         m.size[S_NVERT] < m.xy.shape[0]
         and spare_triangles(m) >= nb + 2
-        and r.ipar[I_HSIZE] + nb + 2 <= r.hkey.shape[0]
+        and queue_used(r) + nb + 2 <= r.hkey.shape[0]
         and _enc_len(r) + nb + 4 <= r.enc.shape[0]
     )
     if not ok:
@@ -898,7 +901,7 @@ def delete_free_vertex(r, m, segs, vtri, work, v, state):
         e = nxt
         if e == e0:
             break
-    if d < 3 or spare_triangles(m) < d or r.ipar[I_HSIZE] + d + 2 > r.hkey.shape[0]:
+    if d < 3 or spare_triangles(m) < d or queue_used(r) + d + 2 > r.hkey.shape[0]:
         return False
     # the polygon w0 .. w[d-1]; base w0 -> w1, chain w0, w[d-1], ..., w1
     half = w.shape[0] // 2
@@ -965,7 +968,7 @@ def _chew_delete(r, m, segs, vtri, work, e, state):
             dot = (xy[o, 0] - xy[a, 0]) * (xy[d, 0] - xy[a, 0]) + (xy[o, 1] - xy[a, 1]) * (xy[d, 1] - xy[a, 1])
             if dot >= 0.0:
                 break
-            if r.ipar[I_HSIZE] + 64 > r.hkey.shape[0]:
+            if queue_used(r) + 64 > r.hkey.shape[0]:
                 return False
             if not delete_free_vertex(r, m, segs, vtri, work, a, state):
                 break
@@ -1205,6 +1208,9 @@ def refine(r, m, segs, vmark, parent, vtri, work, state):
         if _trace_full(r):
             return NEED_ROOM
         if r.ipar[I_CURRENT] >= 0:  # the popped triangle (again after a NEED_ROOM)
+            if queue_used(r) + 1 > r.hkey.shape[0]:  # room to queue it again
+                r.ipar[I_NEED] = max(r.ipar[I_NEED], 1)
+                return NEED_ROOM
             t = r.ipar[I_CURRENT]
             stamp = r.ipar[I_CURSTAMP]
             if m.stamp[t] == stamp:
@@ -1213,7 +1219,7 @@ def refine(r, m, segs, vmark, parent, vtri, work, state):
                     return status
             r.ipar[I_CURRENT] = -1
             if _enc_len(r) > 0:  # split the subsegments first, then try again
-                # (room: the pop freed a slot and a split leaves two spare)
+                # (room: checked above, and a split leaves two spare)
                 heap_push(r, r.par[P_CURKEY], t, stamp)
                 status = split_encroached(r, m, segs, vmark, parent, vtri, work, 1, state)
                 if status != DONE:
@@ -1226,9 +1232,9 @@ def refine(r, m, segs, vmark, parent, vtri, work, state):
             return DONE
         # compact when stale entries outnumber live triangles, or before the queue must grow
         live = m.size[S_NSLOT] - m.size[S_NFREE]
-        if r.ipar[I_HSIZE] > max(r.ipar[I_HLIMIT], min(2 * live + 4096, r.hkey.shape[0] - 1024)):
+        if queue_used(r) > max(r.ipar[I_HLIMIT], min(2 * live + 4096, r.hkey.shape[0] - 1024)):
             heap_compact(r, m)
-            r.ipar[I_HLIMIT] = 2 * r.ipar[I_HSIZE] + 4096  # amortised: never twice in a row
+            r.ipar[I_HLIMIT] = 2 * queue_used(r) + 4096  # amortised: never twice in a row
         if r.ipar[I_SLICE] >= PAUSE_EVERY:
             r.ipar[I_SLICE] = 0
             return PAUSE

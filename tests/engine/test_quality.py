@@ -151,7 +151,10 @@ def test_bucket_queue_serves_finest_first_fifo_within_and_compacts_in_order(stra
     rf.heap_compact(r, Stamps(np.array([0, 1, 1, 1, 0, 1, 1], dtype=np.int32)))
     order = [int(r.htri[rf.heap_pop(r)]) for _ in range(int(r.ipar[rf.I_HSIZE]))]
     assert order == ([3, 6, 1, 2, 5] if strategy == "triangle" else [1, 2, 3, 5, 6])
-    rf.heap_push(r, -2047.0 if strategy == "triangle" else 0.0, 9, 1)  # freed entries are reused
+    assert rf.queue_used(r) == (5 if strategy == "triangle" else 0)  # served entries stay in the log
+    rf.heap_compact(r, Stamps(np.ones(7, dtype=np.int32)))  # until the next compaction
+    assert rf.queue_used(r) == 0
+    rf.heap_push(r, -2047.0 if strategy == "triangle" else 0.0, 9, 1)
     assert int(r.htri[rf.heap_pop(r)]) == 9 and r.ipar[rf.I_HSIZE] == 0
 
 
