@@ -625,8 +625,9 @@ def profile(name: str, strategy: str = "triangle", repeat: int = 3) -> list[tupl
 def print_profile(name: str, rows, strategy: str) -> None:
     total = rows[0][1]
     print(f"\nprofile of {name} ({WORKLOADS[name].opts}, strategy {strategy}), best of the runs:")
+    scale, unit = (1e3, "ms") if total < 0.1 else (1.0, "s")  # small inputs in milliseconds
     for phase, s, n in rows:
-        print(f"  {phase:<52} {s:9.3f} s {100 * s / total:6.1f} %" + (f"  ({n} calls)" if n > 1 else ""))
+        print(f"  {phase:<52} {s * scale:9.3f} {unit:<2} {100 * s / total:6.1f} %" + (f"  ({n} calls)" if n > 1 else ""))
 
 
 # ---------------------------------------------------------------------------------------------

@@ -1,19 +1,21 @@
 #!/usr/bin/env python
 """Where the engine's kernels spend their time, instruction by instruction (Linux, ``perf``).
 
-    python scripts/kernel_profile.py                      # unit square pq30a0.000001
-    python scripts/kernel_profile.py --area 0.0001 --top 8 --disassemble 3
+    python scripts/kernel_profile.py                      # the unit square, pq30a0.000001
+    python scripts/kernel_profile.py dt-1e6 --top 8 --disassemble 3
+    python scripts/kernel_profile.py la-q30 --repeat 500  # small inputs: many runs
 
 ``scripts/bench.py --profile`` times whole kernel calls; inside a kernel
 neither cProfile nor perf can name anything, because numba's machine code has
-no symbols perf can see.  This script runs one ``instrument.triangulate`` of
-the unit square under ``perf record`` with a fresh numba cache (so every
-dispatcher is compiled in the process and keeps its object code), writes
-each dispatcher's object file, and maps every sample that landed in
-numba's code back to the dispatcher whose library holds it and to an offset
-in that object file.  It prints the share of each dispatcher (its inlined
-callees included) and the hottest 64-byte blocks, and disassembles the top
-ones with the sample counts beside the instructions.
+no symbols perf can see.  This script runs ``instrument.triangulate`` on one
+of ``scripts/bench.py``'s workloads (the unit square unless told) under
+``perf record`` with a fresh numba cache (so every dispatcher is compiled in
+the process and keeps its object code), writes each dispatcher's object
+file, and maps every sample that landed in numba's code back to the
+dispatcher whose library holds it and to an offset in that object file.  It
+prints the share of each dispatcher (its inlined callees included) and the
+hottest 64-byte blocks, and disassembles the top ones with the sample counts
+beside the instructions.
 
 Compiling everything afresh takes about a minute before the run starts.
 """
@@ -32,19 +34,22 @@ import tempfile
 from collections import Counter
 from pathlib import Path
 
-# The child: mesh the square, then dump each compiled library's object code
+# The child: run the workload, then dump each compiled library's object code
 # and the run-time address of its entry function.
 CHILD = r"""
 import gc, json, sys, time
-import numpy as np
+sys.path.insert(0, "scripts")
 import instrument
+from bench import WORKLOADS
 from numba.core.registry import CPUDispatcher
-out, area = sys.argv[1], sys.argv[2]
-square = {"vertices": np.array([[0, 0], [1, 0], [1, 1], [0, 1.0]]), "segments": np.array([[0, 1], [1, 2], [2, 3], [3, 0]])}
-instrument.triangulate(square, "pq30a0.01")  # compile outside the measured run
+out, name, repeat = sys.argv[1], sys.argv[2], int(sys.argv[3])
+w = WORKLOADS[name]
+data = w.make()
+instrument.triangulate(data, w.opts)  # compile outside the measured runs
 t = time.perf_counter()
-r = instrument.triangulate(square, "pq30a" + area)
-print(f"run: {time.perf_counter() - t:.3f} s, {len(r['triangles'])} triangles", file=sys.stderr)
+for _ in range(repeat):
+    r = instrument.triangulate(data, w.opts)
+print(f"{name}: {(time.perf_counter() - t) / repeat:.4f} s a run, {len(r['triangles'])} triangles", file=sys.stderr)
 libs = []
 for d in gc.get_objects():
     if isinstance(d, CPUDispatcher):
@@ -79,7 +84,12 @@ def code_ranges(libs: list[dict]) -> list[tuple[int, int, dict]]:
 
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--area", default="0.000001", help="area bound of the unit square run (default 0.000001)")
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    from bench import WORKLOADS
+
+    ap.add_argument("workload", nargs="?", default="square-q30a1e-6", choices=[n for n, w in WORKLOADS.items() if w.make],
+                    help="a workload of scripts/bench.py (default square-q30a1e-6)")
+    ap.add_argument("--repeat", type=int, default=1, help="runs of the workload under perf (default 1)")
     ap.add_argument("--top", type=int, default=15, help="hot blocks to list (default 15)")
     ap.add_argument("--disassemble", type=int, default=2, help="hot blocks to disassemble (default 2)")
     ap.add_argument("--frequency", type=int, default=1999, help="perf's sampling frequency in Hz (default 1999)")
@@ -92,7 +102,7 @@ def main() -> int:
         env = dict(os.environ, NUMBA_CACHE_DIR=f"{tmp}/numba")
         data = f"{tmp}/perf.data"
         subprocess.run(["perf", "record", "-q", "-F", str(args.frequency), "-o", data, sys.executable, "-c", CHILD, tmp,
-                        args.area], check=True, env=env, cwd=Path(__file__).resolve().parents[1])
+                        args.workload, str(args.repeat)], check=True, env=env, cwd=Path(__file__).resolve().parents[1])
         libs = json.load(open(f"{tmp}/libs.json"))
         ranges = code_ranges(libs)
         starts = [r[0] for r in ranges]
