@@ -238,17 +238,28 @@ def delaunay(
     """
     n = xy.shape[0]
     order = insertion_order(xy, np.arange(n), seed)  # first: its temporaries die before the mesh exists
+    # The kernel sees the points renumbered in insertion order, so that it
+    # reads coordinates (of each new point, and mostly of its neighbours)
+    # in sequence rather than at random; the ids are mapped back at the end.
     room = np.empty((n + extra_vertices, 2), dtype=np.float64)
-    room[:n] = xy
+    np.take(xy, order, axis=0, out=room[:n])
     dup = np.full(n, -1, dtype=np.int64)
     m = new_mesh(room, 2 * n + 8 + extra_triangles)
     m.size[0] = n
-    t, jb, jc = _first_triangle(m, work, order)
-    if t < 0:  # all collinear (or fewer than 3 distinct points): no triangles, no error
-        return m, dup
-    stack = np.empty(n + 8, dtype=np.int32)
-    state = np.array([seed * 2654435761 + 1], dtype=np.int64)
-    _insert_all(m, work, order, jb, jc, t, stack, state, dup)
-    remove_ghosts(m)
+    in_order = np.arange(n)
+    t, jb, jc = _first_triangle(m, work, in_order)
+    if t >= 0:  # else all collinear (or fewer than 3 distinct points): no triangles, no error
+        stack = np.empty(n + 8, dtype=np.int32)
+        state = np.array([seed * 2654435761 + 1], dtype=np.int64)
+        _insert_all(m, work, in_order, jb, jc, t, stack, state, dup)
+        remove_ghosts(m)
+        used = m.corner[: 3 * int(m.size[S_NSLOT])]
+        live = used >= 0
+        used[live] = order[used[live]]
+        copies = np.flatnonzero(dup >= 0)
+        kept = order[dup[copies]]
+        dup[:] = -1
+        dup[order[copies]] = kept
+    room[:n] = xy
     _keep_lowest_copy(m, dup)
     return m, dup
