@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .jit import allocating, kernel
+from .jit import allocating, kernel, kernel_inline
 from .counters import C_CREATED, C_DUPLICATE, C_ORIENT
 from .insert import lawson, split_edge, split_triangle, star_edges
 from .locate import LOC_FAILED, LOC_ON_EDGE, LOC_ON_VERTEX, LOC_OUTSIDE, finite_start, walk
@@ -145,7 +145,7 @@ def _scan_locate(m, work, px, py, state):
     return LOC_FAILED, -1
 
 
-@kernel
+@kernel_inline
 def insert_point(m, work, q, hint, stack, state):
     """Insert vertex ``q`` into a Delaunay triangulation with ghosts.
 

@@ -26,7 +26,7 @@ def _finite3(a, b, c):
     return a != GHOST and b != GHOST and c != GHOST
 
 
-@kernel
+@kernel_inline
 def _make(m, work, a, b, c):
     """Allocate triangle (a, b, c) and count it if finite (caller ensured room)."""
     t = new_triangle(m, a, b, c)
@@ -35,14 +35,14 @@ def _make(m, work, a, b, c):
     return t
 
 
-@kernel
+@kernel_inline
 def _kill(m, work, t):
     if not is_ghost(m, t):
         work[C_DELETED] += 1
     kill_triangle(m, t)
 
 
-@kernel
+@kernel_inline
 def split_triangle(m, work, t, p):
     """Replace triangle ``t`` by three triangles around vertex ``p`` inside it.
 
@@ -130,7 +130,7 @@ def split_edge(m, work, e, p):
     return A + 2
 
 
-@kernel
+@kernel_inline
 def flip(m, work, e):
     """Flip edge ``e`` of triangle ``(o, d, x)`` whose twin is in ``(d, o, y)``.
 
@@ -169,7 +169,7 @@ def flip(m, work, e):
     return t1
 
 
-@kernel
+@kernel_inline
 def should_flip(m, work, e):
     """Lawson's test for edge ``e`` = edge 0 of a triangle ``(p, u, v)``.
 
@@ -200,7 +200,7 @@ def should_flip(m, work, e):
     return result
 
 
-@kernel
+@kernel_inline
 def star_edges(m, t, stack):
     """Push edge 0 of ``t`` and of every triangle after it counter-clockwise
     around its corner 0 (the new vertex); return how many were pushed."""
@@ -218,7 +218,7 @@ def star_edges(m, t, stack):
     return n
 
 
-@kernel
+@kernel_inline
 def lawson(m, work, stack, n):
     """Restore the Delaunay property around a new vertex.
 
