@@ -10,6 +10,14 @@ compiled under the same flag, so they must not create heap arrays either:
 predicates' expansions).  No kernel may reassociate floating-point
 arithmetic (numba's fast-math option): that would break the error-free
 transformations of the exact predicates.
+
+``kernel_inline`` is for the small helpers a hot loop calls once per
+triangle or per flip.  A call that LLVM does not inline passes every array
+argument as its seven fields (data pointer, shape, strides, ...): a helper
+taking the refiner (18 arrays) and the mesh pushes about 200 words on the
+stack, which was the hottest code of a refinement run.  numba inlines these
+itself, whatever their size; each call site is compiled again, so keep the
+list short.
 """
 
 import numpy as np

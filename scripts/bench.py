@@ -830,7 +830,7 @@ def main(argv: list[str] | None = None) -> int:
     if args.profile:
         for name in names:
             w = WORKLOADS[name]
-            if w.make is not None and "q" in w.opts and not w.sweep:
+            if w.make is not None and not w.sweep:
                 prof = profile(name, "triangle", args.repeat)
                 print_profile(name, prof, "triangle")
                 profiles.append((name, "triangle", prof))
