@@ -12,7 +12,7 @@ import numpy as np
 
 from . import counters, quality, reconstruct
 from .mesh import NO_EDGE, NO_SEG, S_NLIVE, S_NVERT, live_triangles
-from .output import Result, _col, _put, edge_ends, unique_edges
+from .output import Result, _col, _put, edge_ends, interpolate_attributes, unique_edges
 from .pslg import Mesher, carve, clean_segments, enclose_hull, recover_segments, start
 from .strategies import strategy_id
 from .switches import Options, parse
@@ -174,11 +174,7 @@ def _vertex_attributes(ms: Mesher, attrs: np.ndarray, nv: int) -> np.ndarray:
     """Input attributes, then interpolated ones for vertices added on segments."""
     out = np.zeros((nv, attrs.shape[1]))
     out[: ms.n_input] = attrs
-    for v in range(ms.n_input, nv):  # in creation order: parents come first
-        p0, p1, p2, s, t = ms.parent[v]
-        if p0 >= 0:
-            a0 = out[int(p0)]
-            out[v] = a0 + s * (out[int(p1)] - a0) + t * (out[int(p2)] - a0)
+    interpolate_attributes(out, ms.parent, ms.n_input)
     return out
 
 

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from .jit import kernel
 from .mesh import NO_EDGE, NO_SEG, Mesh
 
 
@@ -35,6 +36,25 @@ def _col(a, dtype=np.int32) -> np.ndarray:
 def _put(out: dict, key: str, arr: np.ndarray) -> None:
     if arr is not None and arr.size > 0:
         out[key] = np.ascontiguousarray(arr)
+
+
+@kernel
+def interpolate_attributes(out, parent, first):
+    """Fill the attribute rows ``out[first:]`` of vertices the engine added,
+    each from its parents' rows: ``parent[v]`` = (p0, p1, p2, s, t) gives
+    a0 + s (a1 - a0) + t (a2 - a0); p0 < 0 leaves zeros.  Vertices come in
+    creation order, so parents are filled first."""
+    for v in range(first, out.shape[0]):
+        p0 = int(parent[v, 0])
+        if p0 < 0:
+            continue
+        p1 = int(parent[v, 1])
+        p2 = int(parent[v, 2])
+        s = parent[v, 3]
+        t = parent[v, 4]
+        for k in range(out.shape[1]):
+            a0 = out[p0, k]
+            out[v, k] = a0 + s * (out[p1, k] - a0) + t * (out[p2, k] - a0)
 
 
 # A triangle's edges in Triangle's listing order: (c0, c1), (c1, c2), (c2, c0).

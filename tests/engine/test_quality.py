@@ -51,6 +51,25 @@ def test_refinement_replays_triangle_bit_for_bit(name, opts):
     assert vertex_set(instrument.triangulate(d, opts)) == vertex_set(triangle.triangulate(d, opts))
 
 
+@pytest.mark.parametrize(("name", "opts"), [("box.2", "pq30"), ("face", "pq30D")])
+def test_new_vertices_interpolate_attributes_as_triangle_does(name, opts):
+    """Where our vertices are Triangle's, so are their attributes: segment
+    splits interpolate along the segment, Steiner points barycentrically in
+    the triangle split (a nonlinear attribute makes the weights show).  Up
+    to rounding: a midpoint is the same point from either end of a
+    subsegment, its attribute not always (one vertex of each mesh here,
+    last bit), and our subsegments do not always run Triangle's way."""
+    d = data(name)
+    x, y = d["vertices"][:, 0], d["vertices"][:, 1]
+    d["vertex_attributes"] = np.c_[x + 2 * y, x * y]
+    ours, theirs = instrument.triangulate(d, opts), triangle.triangulate(d, opts)
+    assert len(ours["vertices"]) > len(d["vertices"])
+    attrs = {tuple(v): a for v, a in zip(theirs["vertices"], theirs["vertex_attributes"])}
+    assert {tuple(v) for v in ours["vertices"]} == set(attrs)
+    for v, a in zip(ours["vertices"], ours["vertex_attributes"]):
+        assert a == pytest.approx(attrs[tuple(v)], rel=1e-15, abs=1e-15), v
+
+
 @pytest.mark.parametrize("strategy", list(instrument.strategies()))
 @pytest.mark.parametrize("steiner", ["offcenter", "circumcenter"])
 def test_every_strategy_meets_the_bound(strategy, steiner):
