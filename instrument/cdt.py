@@ -35,7 +35,7 @@ import numpy as np
 
 from .counters import C_ORIENT, C_STEINER
 from .insert import flip, lawson, should_flip, split_edge, split_triangle, star_edges
-from .jit import kernel
+from .jit import kernel, kernel_inline
 from .locate import LOC_INSIDE, LOC_ON_EDGE, LOC_ON_VERTEX, walk
 from .mesh import NO_EDGE, NO_SEG, S_NSLOT, S_NVERT, lnext, lprev, spare_triangles
 from .predicates import orient2d
@@ -402,6 +402,19 @@ def _near(xy, v, px, py, tol):
     return abs(xy[v, 0] - px) <= tol and abs(xy[v, 1] - py) <= tol
 
 
+@kernel_inline
+def set_parent(parent, v, p0, p1, p2, s, t):
+    """Record that new vertex ``v``'s attributes are a0 + s (a1 - a0) + t (a2 - a0)
+    of vertices p0, p1, p2 (``output.interpolate_attributes`` reads it); the
+    table has no rows when the input has no vertex attributes."""
+    if v < parent.shape[0]:
+        parent[v, 0] = p0
+        parent[v, 1] = p1
+        parent[v, 2] = p2
+        parent[v, 3] = s
+        parent[v, 4] = t
+
+
 @kernel
 def _split_at_crossing(m, work, segs, vmark, vtri, a, b, c, stack, parent, state):
     """Make a vertex where segment ``a b`` crosses subsegment edge ``c``.
@@ -452,12 +465,7 @@ def _split_at_crossing(m, work, segs, vmark, vtri, a, b, c, stack, parent, state
         return -1, False
     xy[nv, 0] = px
     xy[nv, 1] = py
-    if nv < parent.shape[0]:  # the input has vertex attributes
-        parent[nv, 0] = right
-        parent[nv, 1] = left
-        parent[nv, 2] = right
-        parent[nv, 3] = t
-        parent[nv, 4] = 0.0
+    set_parent(parent, nv, right, left, right, t, 0.0)
     m.size[S_NVERT] = nv + 1
     vmark[nv] = segs.marker[r]
     work[C_STEINER] += 1

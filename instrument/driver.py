@@ -118,12 +118,13 @@ def triangulate(
     attrs = None
     if o.r:  # the given triangles, as they are
         ms, inp, attrs = reconstruct.reconstruct(tri, inp, o, work, seed)
-        if o.quality and int(ms.m.size[S_NLIVE]) > 0:
-            reconstruct.make_delaunay(ms)  # Bowyer-Watson needs a Delaunay mesh
     else:
         ms = mesh_input(inp, o, work, seed)
+    refining = o.quality and int(ms.m.size[S_NLIVE]) > 0
+    if refining and o.r:
+        reconstruct.make_delaunay(ms)  # Bowyer-Watson needs a Delaunay mesh
     rows = None
-    if o.quality and int(ms.m.size[S_NLIVE]) > 0:
+    if refining:
         rows = quality.run(ms, o, strategy=strategy, steiner=steiner, trace=trace, triunsuitable=triunsuitable)
     # with r, -j leaves out only undead vertices (duplicates, eaten ones),
     # which reconstruction never makes: unused input vertices stay, as in Triangle
@@ -171,7 +172,7 @@ def _mark_hull_vertices(ms: Mesher) -> None:
 
 
 def _vertex_attributes(ms: Mesher, attrs: np.ndarray, nv: int) -> np.ndarray:
-    """Input attributes, then interpolated ones for vertices added on segments."""
+    """Input attributes, then interpolated ones for the vertices the engine added."""
     out = np.zeros((nv, attrs.shape[1]))
     out[: ms.n_input] = attrs
     interpolate_attributes(out, ms.parent, ms.n_input)

@@ -26,7 +26,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .cdt import R_NREC, _edge, _org_edge, _remember, edge_around, new_record
+from .cdt import R_NREC, _edge, _org_edge, _remember, edge_around, new_record, set_parent
 from .counters import (
     C_CIRCUMCENTER,
     C_CREATED,
@@ -56,7 +56,7 @@ from .locate import (
 from .mesh import (
     NO_EDGE,
     NO_SEG,
-    S_NFREE,
+    S_NLIVE,
     S_NSLOT,
     S_NVERT,
     bond,
@@ -284,7 +284,8 @@ def heap_pop(r):
 @kernel
 def heap_compact(r, m):
     """Drop the stale entries (triangles split or gone since they were
-    queued), keeping the order of the rest; without this, an order that
+    queued; in the bucket log also the served ones), keeping the order of
+    the rest; without this, an order that
     re-queues the same region (``smallest`` on I(n)) keeps quadratically
     many dead entries."""
     if _bucketed(r):
@@ -723,12 +724,8 @@ def _fill_cavity(r, m, work, vtri, p, n, nb):
         v = r.bnd[j, 2]
         t = new_triangle(m, p, u, v)
         work[C_CREATED] += 1
-        bond(m, 3 * t, r.bnd[j, 0])
+        bond(m, 3 * t, r.bnd[j, 0])  # (new_triangle left the other edges unlinked)
         m.seg[3 * t] = r.bnd[j, 3]
-        m.twin[3 * t + 1] = NO_EDGE
-        m.twin[3 * t + 2] = NO_EDGE
-        m.seg[3 * t + 1] = NO_SEG
-        m.seg[3 * t + 2] = NO_SEG
         _set_bounds(r, t, r.bval[j, 0], r.bval[j, 1])
         r.vslot[u] = t
         r.fan[j] = t
@@ -785,12 +782,7 @@ def _new_vertex(m, r, vmark, parent, px, py, kind, marker, p0, p1, p2, s, t):
     m.xy[v, 1] = py
     r.vtype[v] = kind
     vmark[v] = marker
-    if v < parent.shape[0]:  # the input has vertex attributes
-        parent[v, 0] = p0
-        parent[v, 1] = p1
-        parent[v, 2] = p2
-        parent[v, 3] = s
-        parent[v, 4] = t
+    set_parent(parent, v, p0, p1, p2, s, t)
     return v
 
 
@@ -1231,7 +1223,7 @@ def refine(r, m, segs, vmark, parent, vtri, work, state):
         if r.ipar[I_HSIZE] == 0 or r.ipar[I_BUDGET] == 0:
             return DONE
         # compact when stale entries outnumber live triangles, or before the queue must grow
-        live = m.size[S_NSLOT] - m.size[S_NFREE]
+        live = m.size[S_NLIVE]
         if queue_used(r) > max(r.ipar[I_HLIMIT], min(2 * live + 4096, r.hkey.shape[0] - 1024)):
             heap_compact(r, m)
             r.ipar[I_HLIMIT] = 2 * queue_used(r) + 4096  # amortised: never twice in a row
