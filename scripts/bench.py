@@ -289,9 +289,11 @@ with open(base + ".1.poly", "w") as f:
 
 def cli_command(engine: str, opts: str, path: str) -> list[str]:
     if engine == "ours":
-        exe = shutil.which("ruppert")
-        if exe:
-            return [exe, opts, path]
+        # the script pip installed beside this interpreter: a `ruppert` found on
+        # PATH may be a version manager's shim (pyenv's adds about 0.1 s)
+        exe = Path(sys.executable).with_name("ruppert")
+        if exe.exists():
+            return [str(exe), opts, path]
         return [sys.executable, "-c", "import sys; from ruppert_io.cli import main; sys.exit(main())", opts, path]
     return [sys.executable, "-c", TRIANGLE_CLI, opts, path]
 
