@@ -44,15 +44,24 @@ CHILD = (
 
 
 def triangle_log(path: Path, switches: str) -> list[str]:
-    out = subprocess.run([sys.executable, "-c", CHILD, str(path), switches + "VV"], capture_output=True,
-                         text=True, check=True, cwd=ROOT)
+    out = subprocess.run(
+        [sys.executable, "-c", CHILD, str(path), switches + "VV"],
+        capture_output=True,
+        text=True,
+        check=True,
+        cwd=ROOT,
+    )
     return out.stdout.splitlines()
 
 
 def smallest_angle(corners: list[tuple[float, float]]) -> float:
     angles = []
     for k in range(3):
-        (ax, ay), (bx, by), (cx, cy) = corners[k], corners[(k + 1) % 3], corners[(k + 2) % 3]
+        (ax, ay), (bx, by), (cx, cy) = (
+            corners[k],
+            corners[(k + 1) % 3],
+            corners[(k + 2) % 3],
+        )
         ux, uy, vx, vy = bx - ax, by - ay, cx - ax, cy - ay
         cos = (ux * vx + uy * vy) / math.hypot(ux, uy) / math.hypot(vx, vy)
         angles.append(math.degrees(math.acos(max(-1.0, min(1.0, cos)))))
@@ -82,7 +91,9 @@ class VertexPool:
         self.freed_by[s] = why
 
 
-def analyse(lines: list[str], theta: float) -> tuple[int, int, list[tuple[int, float, list[str]]]]:
+def analyse(
+    lines: list[str], theta: float
+) -> tuple[int, int, list[tuple[int, float, list[str]]]]:
     """(triangle splits, how many of those of bad triangles have a vertex in
     a slot a rejected vertex left, [(split number, smallest angle, how the
     reused slots among its vertices were freed)] for the splits of good
@@ -101,8 +112,11 @@ def analyse(lines: list[str], theta: float) -> tuple[int, int, list[tuple[int, f
             text = POINT.findall(lines[i + 1])
             corners = [(float(x), float(y)) for x, y in text]
             angle = smallest_angle(corners)
-            reused = [pool.freed_by[pool.slot[f"{x},{y}"]] for x, y in text
-                      if pool.slot.get(f"{x},{y}") in pool.freed_by]
+            reused = [
+                pool.freed_by[pool.slot[f"{x},{y}"]]
+                for x, y in text
+                if pool.slot.get(f"{x},{y}") in pool.freed_by
+            ]
             if angle > theta + 0.01:  # the log rounds coordinates
                 good.append((splits, angle, reused))
             elif "rejected" in reused:
@@ -128,20 +142,32 @@ def analyse(lines: list[str], theta: float) -> tuple[int, int, list[tuple[int, f
 
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("input", nargs="?", default=str(Path(triangle.__file__).parent / "data" / "la.poly"))
+    ap.add_argument(
+        "input",
+        nargs="?",
+        default=str(Path(triangle.__file__).parent / "data" / "la.poly"),
+    )
     ap.add_argument("--switches", default="pq30")
     args = ap.parse_args(argv)
     m = re.search(r"q([\d.]*)", args.switches)
     theta = float(m.group(1) or 20) if m else 0.0
-    splits, bad_reused, good = analyse(triangle_log(Path(args.input), args.switches), theta)
-    print(f"{Path(args.input).name} -{args.switches}: {splits} triangle splits, {len(good)} of triangles "
-          f"whose smallest angle is above {theta:g} degrees")
+    splits, bad_reused, good = analyse(
+        triangle_log(Path(args.input), args.switches), theta
+    )
+    print(
+        f"{Path(args.input).name} -{args.switches}: {splits} triangle splits, {len(good)} of triangles "
+        f"whose smallest angle is above {theta:g} degrees"
+    )
     for n, angle, reused in good:
         where = ", ".join(reused) if reused else "none"
-        print(f"  split {n}: smallest angle {angle:.2f}; vertices in slots freed by: {where}")
+        print(
+            f"  split {n}: smallest angle {angle:.2f}; vertices in slots freed by: {where}"
+        )
     explained = sum(1 for _, _, reused in good if "rejected" in reused)
-    print(f"{explained} of {len(good)} have a vertex in a slot a rejected vertex left; of the "
-          f"{splits - len(good)} splits of bad triangles, {bad_reused} do")
+    print(
+        f"{explained} of {len(good)} have a vertex in a slot a rejected vertex left; of the "
+        f"{splits - len(good)} splits of bad triangles, {bad_reused} do"
+    )
     return 0
 
 

@@ -2,21 +2,16 @@
 
 from __future__ import annotations
 
-import importlib.util
 from pathlib import Path
 
 import pytest
+from scripthelpers import load_script
 
 triangle = pytest.importorskip("triangle")
 
-ROOT = Path(__file__).resolve().parents[2]
-
 
 def load():
-    spec = importlib.util.spec_from_file_location("triangle_revivals", ROOT / "scripts" / "triangle_revivals.py")
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
+    return load_script("triangle_revivals")
 
 
 # A log in Triangle's -VV wording: a circumcenter is rejected, the subsegment's

@@ -2,22 +2,17 @@
 
 from __future__ import annotations
 
-import importlib.util
 from pathlib import Path
 
 import numpy as np
 import pytest
+from scripthelpers import load_script
 
 triangle = pytest.importorskip("triangle")
 
-ROOT = Path(__file__).resolve().parents[2]
-
 
 def load():
-    spec = importlib.util.spec_from_file_location("triangle_spread", ROOT / "scripts" / "triangle_spread.py")
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
+    return load_script("triangle_spread")
 
 
 def test_re_expressions_keep_the_geometry_exact():
