@@ -12,7 +12,7 @@ and ``triangle:max_area`` (on the triangle block).  Blocks a name does not belon
 to get zeros.  Segments are a ``line`` cell block.  Holes, regions, edges and
 neighbours have no place in meshio that every writer accepts, so they are dropped.
 
-Importing meshio takes about 60 ms, a tenth of the ``ruppert`` command's start-up,
+Importing meshio takes 70-90 ms, about a tenth of the ``ruppert`` command's start-up,
 so ``ruppert_io`` does not import it: ``register_when_imported()`` registers the
 format at once if meshio is already loaded, and otherwise right after meshio's own
 import, whoever triggers it.

@@ -294,7 +294,7 @@ def cli_command(engine: str, opts: str, path: str) -> list[str]:
         exe = Path(sys.executable).with_name("ruppert")
         if exe.exists():
             return [str(exe), opts, path]
-        return [sys.executable, "-c", "import sys; from ruppert_io.cli import main; sys.exit(main())", opts, path]
+        return [sys.executable, "-c", "import sys; from ruppert_io.cli import console; sys.exit(console())", opts, path]
     return [sys.executable, "-c", TRIANGLE_CLI, opts, path]
 
 
