@@ -29,24 +29,52 @@ def _boundary_marks(m, segs, vmark, e, endpoints_always):
 
 
 @kernel
-def infect_hull(m, segs, vmark, infected, queue):
-    """Infect every triangle on a hull edge that is not a subsegment, appending
-    it to ``queue``; hull subsegments with marker 0 become boundaries.
-    Returns the queue length."""
-    n = 0
+def _first_hull_edge(m):
+    """The hull edge leaving the hull vertex with the least (x, y), or NO_EDGE."""
+    xy = m.xy
+    best = NO_EDGE
     for t in range(m.size[S_NSLOT]):
         if m.stamp[t] <= 0:
             continue
         for k in range(3):
             e = 3 * t + k
             if m.twin[e] == NO_EDGE:
-                if m.seg[e] == NO_SEG:
-                    if not infected[t]:
-                        infected[t] = 1
-                        queue[n] = t
-                        n += 1
+                o = m.corner[lnext(e)]
+                if best == NO_EDGE:
+                    best = e
                 else:
-                    _boundary_marks(m, segs, vmark, e, False)
+                    b = m.corner[lnext(best)]
+                    if xy[o, 0] < xy[b, 0] or (xy[o, 0] == xy[b, 0] and xy[o, 1] < xy[b, 1]):
+                        best = e
+    return best
+
+
+@kernel
+def infect_hull(m, segs, vmark, infected, queue):
+    """Walk the convex hull counter-clockwise from the edge leaving its
+    lowest vertex (least x, then y), as Triangle does: a triangle on a hull
+    edge that is not a subsegment is infected and appended to ``queue``; a
+    hull subsegment with marker 0 becomes a boundary, but only if its
+    triangle was not infected earlier in the walk (through another of its
+    hull edges), so the walk's order decides some endpoints' markers.
+    Returns the queue length."""
+    n = 0
+    e0 = _first_hull_edge(m)
+    e = e0
+    while e != NO_EDGE:
+        t = e // 3
+        if not infected[t]:
+            if m.seg[e] == NO_SEG:
+                infected[t] = 1
+                queue[n] = t
+                n += 1
+            else:
+                _boundary_marks(m, segs, vmark, e, False)
+        # the next hull edge leaves this one's destination
+        f = lnext(e)
+        while m.twin[f] != NO_EDGE:
+            f = lnext(m.twin[f])
+        e = f if f != e0 else NO_EDGE
     return n
 
 

@@ -81,6 +81,16 @@ def test_memory_subprocess(bench):  # a fresh process sees only the real workloa
     assert bench.peak_memory_mb("la-q30", "triangle") >= 0
 
 
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="VmHWM is Linux's")
+def test_peak_counts_memory_freed_inside_a_c_call(bench):
+    """The high-water mark sees what a C call allocates and frees while it
+    holds the GIL (a sampling thread would not)."""
+    assert bench.reset_peak_rss()
+    base = bench.rss_mb()
+    bytearray(64 * 2**20)  # touched (zeroed) and freed in one C call
+    assert bench.peak_rss_mb() - base >= 60
+
+
 def test_cli_workload(bench):
     (row,) = bench.bench("cli-A", 1, False)
     assert row["triangles"]["ours"] == row["triangles"]["triangle"] == 87
