@@ -38,6 +38,7 @@ from __future__ import annotations
 import argparse
 import csv
 import datetime as dt
+import importlib.util
 import json
 import math
 import multiprocessing
@@ -1094,6 +1095,9 @@ def parse_args(argv):
         args.sweep_max_n = min(args.sweep_max_n, 800)
         args.repeat = 1
     args.strategy_max_n = max(args.strategy_max_n, 100)
+    if not args.no_cgal and importlib.util.find_spec("CGAL") is None:
+        print("CGAL's bindings are not installed (pip install cgal): no CGAL runs", flush=True)
+        args.no_cgal = True
     try:
         args.alphas = [float(a) for a in args.alphas.split(",") if a.strip()]
         for a in args.alphas:
