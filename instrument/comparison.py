@@ -536,6 +536,13 @@ def _error(exc: BaseException) -> str:
     return f"{type(exc).__name__}: {text[0] if text else ''}".rstrip(": ")
 
 
+def has_cgal() -> bool:
+    """Are CGAL's Python bindings (the ``cgal`` package) installed?"""
+    import importlib.util
+
+    return importlib.util.find_spec("CGAL") is not None
+
+
 def _importable(row: Row, module: str) -> bool:
     """Can ``module`` be imported?  If not, ``row`` says why."""
     try:

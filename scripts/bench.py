@@ -478,6 +478,8 @@ def bench(name: str, repeat: int, memory: bool, *, strategies: list[str] | None 
         return bench_cli(name, w, repeat, memory)
     strategies = (strategies or available_strategies()) if w.sweep else ["triangle"]
     isolated = w.sweep and timeout > 0
+    from instrument.comparison import has_cgal
+
     cgal = cgal and w.cgal and has_cgal()
     data = w.make()
     for s in strategies:
@@ -575,12 +577,6 @@ def bench(name: str, repeat: int, memory: bool, *, strategies: list[str] | None 
             for row in done:
                 row["goal_met"] = row["ratio"] <= w.goal
     return rows
-
-
-def has_cgal() -> bool:
-    import importlib.util
-
-    return importlib.util.find_spec("CGAL") is not None
 
 
 # ---------------------------------------------------------------------------------------------

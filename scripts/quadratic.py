@@ -38,7 +38,6 @@ from __future__ import annotations
 import argparse
 import csv
 import datetime as dt
-import importlib.util
 import json
 import math
 import multiprocessing
@@ -54,7 +53,7 @@ sys.path.insert(0, str(ROOT))
 
 import instrument
 from instrument import quadratic
-from instrument.comparison import run_cgal, run_triangle, triangle_statistics
+from instrument.comparison import has_cgal, run_cgal, run_triangle, triangle_statistics
 
 REPLAY = "replay"  # engine name of Theorem 3's scripted run
 MAIN_ALPHA = 20.0
@@ -1095,7 +1094,7 @@ def parse_args(argv):
         args.sweep_max_n = min(args.sweep_max_n, 800)
         args.repeat = 1
     args.strategy_max_n = max(args.strategy_max_n, 100)
-    if not args.no_cgal and importlib.util.find_spec("CGAL") is None:
+    if not args.no_cgal and not has_cgal():
         print("CGAL's bindings are not installed (pip install cgal): no CGAL runs", flush=True)
         args.no_cgal = True
     try:

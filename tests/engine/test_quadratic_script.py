@@ -71,3 +71,9 @@ def test_timeout_is_reported(script):
     assert status == "timeout" and "killed" in note
     status, note = script["isolated"](np.log, ("x",), 10)
     assert status == "error"
+
+
+def test_cgal_runs_are_left_out_without_its_bindings(script, monkeypatch, capsys):
+    monkeypatch.setitem(script["parse_args"].__globals__, "has_cgal", lambda: False)
+    assert script["parse_args"](["--quick"]).no_cgal
+    assert "not installed" in capsys.readouterr().out
