@@ -1,16 +1,20 @@
-"""Delaunay triangulation of a point set by randomized incremental insertion.
+"""Delaunay triangulation of a point set.
 
-Points are inserted in a biased randomized insertion order (BRIO: rounds of
-doubling size, each sorted along a Hilbert curve), located by walking from
-the previous insertion, and inserted with Lawson flips.  Ghost triangles keep
-the outside of the hull symbolic, so the walk never leaves the mesh and no
-bounding triangle distorts the result; they are removed at the end, leaving
-``NO_EDGE`` across the convex hull.
+Two methods:
 
-Exact duplicates are found by sorting before insertion and are never
-inserted: ``duplicate_of[i]`` names the surviving copy (the lowest input
-index), as Triangle keeps duplicates in the output numbering but out of the
-mesh.
+* divide and conquer (divconq.py), the default, as in Triangle: with its tie
+  rules the triangulation of cocircular points is the one Triangle makes;
+  cuts alternate between vertical and horizontal unless ``vertical`` (``-l``);
+* randomized incremental insertion (``-i``): points in a biased randomized
+  insertion order (BRIO: rounds of doubling size, each sorted along a Hilbert
+  curve), located by walking from the previous insertion, inserted with
+  Lawson flips.
+
+Ghost triangles keep the outside of the hull symbolic while the mesh is
+built; they are removed at the end, leaving ``NO_EDGE`` across the convex
+hull.  Exact duplicates are never inserted: ``duplicate_of[i]`` names the
+surviving copy (the lowest input index), as Triangle keeps duplicates in the
+output numbering but out of the mesh.
 """
 
 from __future__ import annotations
@@ -19,6 +23,7 @@ import numpy as np
 
 from .jit import allocating, kernel, kernel_inline
 from .counters import C_CREATED, C_DUPLICATE, C_ORIENT
+from .divconq import cut_order, triangulate_sorted
 from .insert import lawson, split_edge, split_triangle, star_edges
 from .locate import LOC_FAILED, LOC_ON_EDGE, LOC_ON_VERTEX, LOC_OUTSIDE, finite_start, walk
 from .mesh import GHOST, NO_EDGE, S_NSLOT, Mesh, bond, kill_triangle, lnext, new_mesh, new_triangle
@@ -226,16 +231,69 @@ def _keep_lowest_copy(m: Mesh, dup: np.ndarray) -> None:
     dup[best[root]] = -1
 
 
+METHODS = ("divconq", "vertical", "incremental")
+
+
 def delaunay(
-    xy: np.ndarray, work: np.ndarray, *, seed: int = 0, extra_vertices: int = 0, extra_triangles: int = 0
+    xy: np.ndarray,
+    work: np.ndarray,
+    *,
+    method: str = "divconq",
+    seed: int = 0,
+    extra_vertices: int = 0,
+    extra_triangles: int = 0,
 ) -> tuple[Mesh, np.ndarray]:
     """Delaunay triangulation of the rows of ``xy`` (finite float64 coordinates).
 
     Returns the mesh (ghosts removed; no triangles if the points are all
     collinear) and ``duplicate_of``: -1, or the index of the copy of that
     point which is in the mesh (the lowest index of the copies).
-    ``extra_vertices`` and ``extra_triangles`` reserve room for later stages.
+    ``method`` is one of ``METHODS``; ``seed`` drives the incremental
+    method's insertion order.  ``extra_vertices`` and ``extra_triangles``
+    reserve room for later stages.
     """
+    if method == "incremental":
+        return _incremental(xy, work, seed, extra_vertices, extra_triangles)
+    if method not in METHODS:
+        raise ValueError(f"unknown Delaunay method {method!r}")
+    n = xy.shape[0]
+    order = np.argsort(xy[:, 0], kind="stable")
+    xs = xy[order, 0]
+    if np.any(xs[1:] == xs[:-1]):  # ties in x: sort by (x, y); stable, so equal points keep index order
+        order = np.lexsort((xy[:, 1], xy[:, 0]))
+    dup = np.full(n, -1, dtype=np.int64)
+    if n > 1:
+        s = xy[order]
+        new = np.empty(n, dtype=bool)
+        new[0] = True
+        np.any(s[1:] != s[:-1], axis=1, out=new[1:])
+        if not new.all():
+            keeper = order[np.maximum.accumulate(np.where(new, np.arange(n), 0))]
+            dup[order[~new]] = keeper[~new]
+            work[C_DUPLICATE] += int(n - new.sum())
+            order = order[new]
+    ids = order.astype(np.int64)
+    pts = cut_order(xy, ids, method == "divconq")
+    # The kernel sees the points renumbered in cut order, which keeps the
+    # points of each group together in memory; ids are mapped back at the end.
+    room = np.empty((n + extra_vertices, 2), dtype=np.float64)
+    room[: ids.size] = pts
+    del pts
+    m = new_mesh(room, 2 * n + 8 + extra_triangles)
+    m.size[0] = n
+    triangulate_sorted(m, work, ids.size, method == "divconq")
+    remove_ghosts(m)
+    used = m.corner[: 3 * int(m.size[S_NSLOT])]
+    live = used >= 0
+    used[live] = ids[used[live]]
+    room[:n] = xy
+    return m, dup
+
+
+def _incremental(
+    xy: np.ndarray, work: np.ndarray, seed: int, extra_vertices: int, extra_triangles: int
+) -> tuple[Mesh, np.ndarray]:
+    """The randomized incremental method (see the module's docstring)."""
     n = xy.shape[0]
     order = insertion_order(xy, np.arange(n), seed)  # first: its temporaries die before the mesh exists
     # The kernel sees the points renumbered in insertion order, so that it

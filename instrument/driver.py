@@ -145,7 +145,8 @@ def mesh_input(inp: dict, o: Options, work: np.ndarray, seed: int = 0) -> Mesher
     needs them: everything ``triangulate`` does before refining."""
     xy = inp["vertices"]
     spare = 2 * len(inp.get("segments", ())) + 16
-    ms = start(xy, inp["vertex_markers"], work, seed, spare, parents="vertex_attributes" in inp)
+    method = "incremental" if o.i else "vertical" if o.l else "divconq"  # -F: no sweepline; divide and conquer
+    ms = start(xy, inp["vertex_markers"], work, seed, spare, method=method, parents="vertex_attributes" in inp)
     for i in np.flatnonzero(ms.dup >= 0):
         ms.warnings.append(f"Warning:  A duplicate vertex at ({xy[i, 0]:.12g}, {xy[i, 1]:.12g}) appeared and was ignored.")
     if o.p:

@@ -74,13 +74,20 @@ def _widen(a: np.ndarray, n: int, fill) -> np.ndarray:
 
 
 def start(
-    xy: np.ndarray, markers: np.ndarray, work: np.ndarray, seed: int, spare_vertices: int, parents: bool = True
+    xy: np.ndarray,
+    markers: np.ndarray,
+    work: np.ndarray,
+    seed: int,
+    spare_vertices: int,
+    method: str = "divconq",
+    parents: bool = True,
 ) -> Mesher:
-    """Delaunay-triangulate the input vertices, with room for more; ``parents``:
-    record what each new vertex's attributes interpolate."""
+    """Delaunay-triangulate the input vertices by ``method`` (see delaunay.py),
+    with room for more; ``parents``: record what each new vertex's
+    attributes interpolate."""
     n = xy.shape[0]
     spare = max(spare_vertices, 16)
-    m, dup = delaunay(xy, work, seed=seed, extra_vertices=spare, extra_triangles=2 * spare)
+    m, dup = delaunay(xy, work, method=method, seed=seed, extra_vertices=spare, extra_triangles=2 * spare)
     cap = n + spare
     vmark = np.zeros(cap, dtype=np.int32)
     vmark[:n] = markers

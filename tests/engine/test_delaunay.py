@@ -89,11 +89,17 @@ def degenerate_sets():
 
 
 @pytest.mark.parametrize("name,points", list(degenerate_sets()), ids=lambda x: x if isinstance(x, str) else "")
-def test_degenerate_sets_count_and_check(name, points):
+def test_degenerate_sets_equal_triangle_ties_included(name, points):
+    """Divide and conquer picks Triangle's diagonals between cocircular points;
+    the incremental method (-i) picks its own, so only its size is compared."""
     ours = instrument.triangulate({"vertices": points})
     theirs = triangle.triangulate({"vertices": points})
-    assert len(ours["triangles"]) == len(theirs["triangles"])
+    same_point = np.unique(points, axis=0, return_inverse=True)[1].ravel()  # Triangle may keep another copy
+    assert triangle_set(same_point[ours["triangles"]]) == triangle_set(same_point[theirs["triangles"]])
     assert_good(ours, points)
+    incremental = instrument.triangulate({"vertices": points}, "i")
+    assert len(incremental["triangles"]) == len(theirs["triangles"])
+    assert_good(incremental, points)
 
 
 @pytest.mark.parametrize("exponent", [-500, 500])
@@ -184,10 +190,13 @@ def test_every_node_file_triangulates_like_triangle(path):
     assert check_mesh(ours) == []
 
 
-def test_counters_are_counted():
+@pytest.mark.parametrize("opts", ["", "l", "i"])
+def test_counters_are_counted(opts):
     pts = np.random.default_rng(5).random((500, 2))
-    w = instrument.triangulate({"vertices": pts}).work
-    assert w["incircle_tests"] > 0 and w["orient_tests"] > 0 and w["walk_steps"] > 0 and w["flips"] > 0
+    w = instrument.triangulate({"vertices": pts}, opts).work
+    assert w["incircle_tests"] > 0 and w["orient_tests"] > 0 and w["triangles_deleted"] > 0
+    # divide and conquer neither walks nor flips: it deletes edges while merging
+    assert (w["walk_steps"] > 0 and w["flips"] > 0) == (opts == "i")
     assert w["triangles_created"] - w["triangles_deleted"] == 2 * 500 - 2 - len(
         instrument.triangulate({"vertices": pts}, "c")["segments"]
     )

@@ -111,28 +111,14 @@ def test_corpus_polys_match_triangle(row):
         assert_like_triangle(d, opts)
 
 
-# A4paper.poly is a rectangle with one segment: `p` eats everything, and which
-# endpoints keep marker 1 depends on the diagonal Triangle's divide and conquer
-# picks between the rectangle's cocircular corners (the hull walk skips a
-# triangle it has already infected).  Our Delaunay triangulation picks the
-# other diagonal, so two unmeshed vertices are written with 1 where Triangle
-# writes 0.  Matching its cocircular choices would mean porting its divide and
-# conquer; perturbed copies of such inputs agree
-# (test_hull_walk_order_decides_which_segment_endpoints_are_marked).
-COCIRCULAR_TIE = "VVingerfly__Triangulation__A4paper.poly"
 
 
-@pytest.mark.parametrize(
-    "row",
-    [
-        pytest.param(r, marks=pytest.mark.xfail(r["file"] == COCIRCULAR_TIE, strict=True,
-                                                reason="Triangle's cocircular diagonal decides two markers"))
-        for r in corpus_rows()
-    ],
-    ids=lambda r: r["file"],
-)
+@pytest.mark.parametrize("row", corpus_rows(), ids=lambda r: r["file"])
 def test_corpus_polys_p_like_the_triangle_package(row):
-    """Markers (and everything else) under `p`, against the triangle package."""
+    """Markers (and everything else) under `p`, against the triangle package.
+    A4paper.poly is a rectangle with one segment that `p` eats whole: which
+    endpoints keep marker 1 depends on the diagonal Triangle's divide and
+    conquer picks between the four cocircular corners, and ours picks it."""
     assert_like_triangle(engine_input(ruppert_io.read(CORPUS / row["file"])), "p")
 
 

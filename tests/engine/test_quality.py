@@ -42,7 +42,7 @@ def vertex_set(mesh: dict) -> set[tuple[float, float]]:
 
 @pytest.mark.parametrize(
     ("name", "opts"),
-    [("box.2", "pq30"), ("double_hex3.1", "pq30"), ("face", "pq30D"), ("face", "pq20"), ("la", "pq30S50"), ("box.4", "pq30S100")],
+    [("box.2", "pq30"), ("double_hex3.1", "pq30"), ("face", "pq30D"), ("face", "pq20"), ("la", "pq30S50"), ("box.4", "pq30S100"), ("face", "pq30S50")],
 )
 def test_refinement_replays_triangle_bit_for_bit(name, opts):
     """Triangle's order, split arithmetic and walk: on these inputs (or for

@@ -1,0 +1,478 @@
+"""Delaunay triangulation by divide and conquer (Guibas and Stolfi's merge,
+Dwyer's alternating cuts), the method Triangle uses by default.
+
+Written from the description of the method in the literature and in the
+spec (§4.2); nothing here is taken from Triangle's source.  Why the same
+method as Triangle: where points are cocircular the Delaunay triangulation
+is not unique, and the merge's tie rules (strict tests: an edge is deleted
+only if a point is strictly inside a circle; on a tie the left candidate
+wins) pick the same diagonals as Triangle does, so that the meshes agree
+edge for edge.
+
+The points are first cut in halves at the median, alternately by ``(x, y)``
+and by ``(y, x)`` order ("frames" 0 and 1), down to groups of two or three.
+Each half is triangulated with ghost triangles around its convex hull (see
+mesh.py); a merge finds the lower common tangent of the two hulls and knits
+the halves together upwards.  The seam's ghosts become the new triangles,
+and an edge that fails the circle test is deleted by flipping it with its
+ghost, so a merge allocates just two triangles: the ghosts of the two
+tangents.
+
+In frame 1 the "left" half is the one lower in ``(y, x)`` order; the merge
+code is the same, since it only uses orientation and incircle tests, which do
+not depend on the frame.  It only needs, for each half, the hull edge leaving
+the half's last vertex (in the frame of the cut) and leaving its first
+vertex: ``hull_at[v]`` keeps the ghost of the hull edge leaving ``v``, which
+is unique for such extreme vertices.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .counters import C_CREATED, C_DELETED, C_INCIRCLE, C_ORIENT
+from .jit import allocating, kernel, kernel_inline
+from .mesh import GHOST, bond, lnext, lprev, new_triangle
+from .predicates import incircle, orient2d
+
+# ------------------------------------------------------------ the cuts
+
+
+@kernel_inline
+def _before(xy, a, b, f):
+    """True if point ``a`` comes before point ``b`` in frame ``f``:
+    ``(x, y)`` order for f = 0, ``(y, x)`` order for f = 1."""
+    g = 1 - f
+    return xy[a, f] < xy[b, f] or (xy[a, f] == xy[b, f] and xy[a, g] < xy[b, g])
+
+
+@kernel_inline
+def _less(a1, a2, b1, b2):
+    """Lexicographic order of the keys (a1, a2) and (b1, b2)."""
+    return a1 < b1 or (a1 == b1 and a2 < b2)
+
+
+@kernel_inline
+def _swap(pts, ids, i, j):
+    ids[i], ids[j] = ids[j], ids[i]
+    for c in range(2):
+        pts[i, c], pts[j, c] = pts[j, c], pts[i, c]
+
+
+@kernel
+def _select(pts, ids, lo, hi, k, f):
+    """Quickselect: reorder rows ``lo .. hi-1`` of ``pts`` (and ``ids`` with
+    them) so that row ``k`` holds the point that sorting in frame ``f`` would
+    put there, the points before it in front and the points after it behind.
+    The points must be distinct.  Rows move with their ids, so comparisons
+    read memory in sequence."""
+    g = 1 - f
+    while hi - lo > 2:
+        mid = (lo + hi - 1) >> 1
+        # the median of three keys is the pivot
+        a1, a2 = pts[lo, f], pts[lo, g]
+        b1, b2 = pts[mid, f], pts[mid, g]
+        c1, c2 = pts[hi - 1, f], pts[hi - 1, g]
+        if _less(b1, b2, a1, a2):
+            a1, a2, b1, b2 = b1, b2, a1, a2
+        if _less(c1, c2, b1, b2):
+            b1, b2 = c1, c2
+            if _less(b1, b2, a1, a2):
+                b1, b2 = a1, a2
+        i = lo
+        j = hi - 1
+        while i <= j:
+            while _less(pts[i, f], pts[i, g], b1, b2):
+                i += 1
+            while _less(b1, b2, pts[j, f], pts[j, g]):
+                j -= 1
+            if i <= j:
+                _swap(pts, ids, i, j)
+                i += 1
+                j -= 1
+        if k <= j:
+            hi = j + 1
+        elif k >= i:
+            lo = i
+        else:
+            return
+    if hi - lo == 2 and _less(pts[lo + 1, f], pts[lo + 1, g], pts[lo, f], pts[lo, g]):
+        _swap(pts, ids, lo, lo + 1)
+
+
+@allocating
+def cut_order(xy, ids, alternate):
+    """Order ``ids`` (distinct points sorted in frame 0) for the recursion, in
+    place, and return their coordinates in that order: each group of more
+    than three is split at ``size >> 1`` into halves separated in the frame
+    of its cut, the frames alternating from 0 at the top (``alternate``) or
+    always 0; groups of two or three end in frame 0 order."""
+    n = ids.shape[0]
+    pts = np.empty((n, 2), dtype=np.float64)
+    for i in range(n):
+        pts[i, 0] = xy[ids[i], 0]
+        pts[i, 1] = xy[ids[i], 1]
+    if not alternate or n <= 3:
+        return pts
+    stack = np.empty((130, 3), dtype=np.int64)  # depth <= 64
+    half = n >> 1
+    stack[0] = (0, half, 1)
+    stack[1] = (half, n, 1)
+    top = 2
+    while top > 0:
+        top -= 1
+        lo, hi, f = stack[top, 0], stack[top, 1], stack[top, 2]
+        size = hi - lo
+        if size <= 3:
+            _select(pts, ids, lo, hi, lo + 1, 0)  # frame 0 order
+            if size == 3:
+                _select(pts, ids, lo + 1, hi, lo + 2, 0)
+            continue
+        mid = lo + (size >> 1)
+        _select(pts, ids, lo, hi, mid, f)
+        stack[top] = (lo, mid, 1 - f)
+        stack[top + 1] = (mid, hi, 1 - f)
+        top += 2
+    return pts
+
+
+# ------------------------------------------------------------ hull ghosts
+#
+# A ghost's finite edge h runs from the head to the tail of the hull edge it
+# stands for (the hull runs counter-clockwise, the mesh on its left).
+
+
+@kernel_inline
+def _tail(m, h):
+    return m.corner[lprev(h)]
+
+
+@kernel_inline
+def _head(m, h):
+    return m.corner[lnext(h)]
+
+
+@kernel_inline
+def _next_ccw(m, h):
+    """The ghost of the next hull edge counter-clockwise."""
+    return lprev(m.twin[lprev(h)])
+
+
+@kernel_inline
+def _prev_cw(m, h):
+    """The ghost of the previous hull edge (clockwise)."""
+    return lnext(m.twin[lnext(h)])
+
+
+@kernel_inline
+def _ghost(m, hull_at, a, b):
+    """A ghost on hull edge ``a -> b``; returns its finite edge."""
+    g = new_triangle(m, b, a, GHOST)
+    h = 3 * g + 2
+    hull_at[a] = h
+    return h
+
+
+@kernel_inline
+def _link(m, h1, h2):
+    """Make hull edge ``h2`` follow ``h1`` counter-clockwise."""
+    bond(m, lprev(h1), lnext(h2))
+
+
+# ------------------------------------------------------------ base cases
+
+
+@kernel
+def _two(m, hull_at, a, b):
+    h_ba = _ghost(m, hull_at, b, a)
+    h_ab = _ghost(m, hull_at, a, b)
+    bond(m, h_ab, h_ba)
+    _link(m, h_ab, h_ba)
+    _link(m, h_ba, h_ab)
+
+
+@kernel
+def _three(m, work, hull_at, a, b, c):
+    """Points in frame 0 order: a triangle, or a chain of two edges if collinear."""
+    xy = m.xy
+    work[C_ORIENT] += 1
+    s = orient2d(xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[c, 0], xy[c, 1])
+    if s == 0.0:
+        h_ab = _ghost(m, hull_at, a, b)
+        h_bc = _ghost(m, hull_at, b, c)
+        h_cb = _ghost(m, hull_at, c, b)
+        h_ba = _ghost(m, hull_at, b, a)
+        bond(m, h_ab, h_ba)
+        bond(m, h_bc, h_cb)
+        _link(m, h_ab, h_bc)
+        _link(m, h_bc, h_cb)
+        _link(m, h_cb, h_ba)
+        _link(m, h_ba, h_ab)
+        return
+    if s < 0.0:
+        b, c = c, b
+    t = new_triangle(m, a, b, c)
+    work[C_CREATED] += 1
+    h_ab = _ghost(m, hull_at, a, b)
+    h_bc = _ghost(m, hull_at, b, c)
+    h_ca = _ghost(m, hull_at, c, a)
+    bond(m, 3 * t + 2, h_ab)
+    bond(m, 3 * t + 0, h_bc)
+    bond(m, 3 * t + 1, h_ca)
+    _link(m, h_ab, h_bc)
+    _link(m, h_bc, h_ca)
+    _link(m, h_ca, h_ab)
+
+
+# ------------------------------------------------------------ the merge
+
+
+@kernel_inline
+def _below(xy, a, b, p):
+    """True if ``p`` lies strictly right of the line ``a -> b``."""
+    return orient2d(xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[p, 0], xy[p, 1]) < 0.0
+
+
+@kernel_inline
+def _above(xy, a, b, p):
+    return orient2d(xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[p, 0], xy[p, 1]) > 0.0
+
+
+@kernel_inline
+def _inside(xy, a, b, c, d):
+    """True if ``d`` is strictly inside the circle through counter-clockwise ``a, b, c``."""
+    return incircle(xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[c, 0], xy[c, 1], xy[d, 0], xy[d, 1]) > 0.0
+
+
+@kernel
+def _unhull(m, hull_at, h, left):
+    """Delete the triangle inside hull edge ``h`` from its half: the hull edge
+    ``u -> w`` of the triangle ``(u, w, x)`` becomes the two hull edges
+    ``u -> x -> w``.  Returns the finite edge of the ghost on the seam side:
+    ``u -> x`` for the left half, ``x -> w`` for the right."""
+    t_in = m.twin[h]
+    x = m.corner[t_in]
+    u = _tail(m, h)
+    w = _head(m, h)
+    n_ux = m.twin[lprev(t_in)]  # across u -> x (t_in's edge x -> u)
+    n_xw = m.twin[lnext(t_in)]  # across x -> w (t_in's edge w -> x)
+    before = m.twin[lnext(h)]  # the ghost chain on both sides; the seam
+    after = m.twin[lprev(h)]  # side's pointer is stale (rebonded by the knit)
+    # Slots and rotations as Triangle's flip leaves them (found by comparing
+    # its output order): relative to the rotation of the handle on the edge
+    # u - w in each slot, the ghost of u -> x is (org, dest, apex) =
+    # (GHOST, x, u) and the ghost of x -> w is (x, GHOST, w); the right half
+    # puts the first in the triangle's slot, the left half the second.
+    if left:
+        s_ux, s_xw = h, t_in
+    else:
+        s_ux, s_xw = t_in, h
+    k = s_ux % 3
+    g = s_ux - k
+    m.corner[g + k] = u
+    m.corner[g + (k + 1) % 3] = GHOST
+    m.corner[g + (k + 2) % 3] = x
+    h_ux = g + (k + 1) % 3
+    k = s_xw % 3
+    g = s_xw - k
+    m.corner[g + k] = w
+    m.corner[g + (k + 1) % 3] = x
+    m.corner[g + (k + 2) % 3] = GHOST
+    h_xw = g + (k + 2) % 3
+    bond(m, h_ux, n_ux)
+    bond(m, h_xw, n_xw)
+    if left:
+        bond(m, lprev(h_xw), after)
+    else:
+        bond(m, lnext(h_ux), before)
+    _link(m, h_ux, h_xw)
+    hull_at[u] = h_ux
+    hull_at[x] = h_xw
+    return h_ux if left else h_xw
+
+
+@kernel
+def _merge(m, work, hull_at, l, r):
+    """Merge the triangulations left and right of a cut; ``l`` is the left
+    half's last vertex and ``r`` the right half's first, in the cut's frame."""
+    xy = m.xy
+    hl = hull_at[l]  # hull edge leaving l (counter-clockwise)
+    hr = hull_at[r]
+    # Lower common tangent: walk l clockwise and r counter-clockwise while
+    # the next hull vertex lies strictly below the line l -> r.
+    moved = True
+    while moved:
+        moved = False
+        pl = _prev_cw(m, hl)
+        work[C_ORIENT] += 1
+        if _below(xy, l, r, _tail(m, pl)):
+            hl = pl
+            l = _tail(m, pl)
+            moved = True
+        work[C_ORIENT] += 1
+        if _below(xy, l, r, _head(m, hr)):
+            r = _head(m, hr)
+            hr = _next_ccw(m, hr)
+            moved = True
+    gl = hl  # left candidate: the left hull's edge ll -> ul
+    gr = _prev_cw(m, hr)  # right candidate: the right hull's edge ur -> lr
+    outer = _prev_cw(m, hl)
+    g = new_triangle(m, l, GHOST, r)  # Triangle's rotation (matters to the pool order only)
+    bottom = 3 * g + 1
+    hull_at[l] = bottom
+    _link(m, outer, bottom)
+    _link(m, bottom, hr)
+    base = bottom  # the edge lr -> ll seen from below
+    ll = l
+    lr = r
+    while True:
+        ul = _head(m, gl)
+        ur = _tail(m, gr)
+        work[C_ORIENT] += 2
+        left_ok = _above(xy, ll, lr, ul)
+        right_ok = _above(xy, ll, lr, ur)
+        if left_ok:
+            # delete left edges ll - ul whose triangle's circle holds its far corner
+            while m.corner[m.twin[gl]] != GHOST:
+                work[C_INCIRCLE] += 1
+                if not _inside(xy, ll, lr, ul, m.corner[m.twin[gl]]):
+                    break
+                gl = _unhull(m, hull_at, gl, True)
+                work[C_DELETED] += 1
+                ul = _head(m, gl)
+        if right_ok:
+            while m.corner[m.twin[gr]] != GHOST:
+                work[C_INCIRCLE] += 1
+                if not _inside(xy, ll, lr, ur, m.corner[m.twin[gr]]):
+                    break
+                gr = _unhull(m, hull_at, gr, False)
+                work[C_DELETED] += 1
+                ur = _tail(m, gr)
+        if not left_ok and not right_ok:
+            break
+        take_left = left_ok
+        if left_ok and right_ok:
+            work[C_INCIRCLE] += 1
+            take_left = not _inside(xy, ul, ll, lr, ur)
+        work[C_CREATED] += 1
+        if take_left:
+            # ghost (ul, ll, GHOST) becomes triangle (ul, ll, lr)
+            nxt = _next_ccw(m, gl)
+            m.corner[gl] = lr
+            bond(m, lnext(gl), base)
+            base = lprev(gl)
+            gl = nxt
+            ll = ul
+        else:
+            # ghost (lr, ur, GHOST) becomes triangle (lr, ur, ll)
+            nxt = _prev_cw(m, gr)
+            m.corner[gr] = ll
+            bond(m, lprev(gr), base)
+            base = lnext(gr)
+            gr = nxt
+            lr = ur
+    top = _ghost(m, hull_at, lr, ll)
+    bond(m, top, base)
+    _link(m, gr, top)
+    _link(m, top, gl)
+    return top
+
+
+@kernel_inline
+def _find_hull_edge(m, hull_at, v, h):
+    """Make ``hull_at[v]`` the hull edge leaving ``v``, walking from hull edge
+    ``h`` if it is stale.  Needed for a merged half's extreme vertices only,
+    which the hull passes once; ``hull_at`` goes stale where a deletion left
+    a half's hull passing a vertex twice, as a tree of edges."""
+    g = hull_at[v]
+    if m.corner[g] != GHOST or _tail(m, g) != v:
+        while _tail(m, h) != v:
+            h = _next_ccw(m, h)
+        hull_at[v] = h
+
+
+# ------------------------------------------------------------ recursion
+
+
+@kernel_inline
+def _first(xy, a, b, f):
+    return b if _before(xy, b, a, f) else a
+
+
+@kernel_inline
+def _last(xy, a, b, f):
+    return b if _before(xy, a, b, f) else a
+
+
+@kernel
+def _base(m, work, hull_at, lo, hi, out):
+    """Triangulate a group of two or three (in frame 0 order); write its
+    first and last points in frames 0 and 1 to ``out``."""
+    xy = m.xy
+    if hi - lo == 2:
+        _two(m, hull_at, lo, lo + 1)
+    else:
+        _three(m, work, hull_at, lo, lo + 1, lo + 2)
+    out[0] = lo
+    out[1] = hi - 1
+    out[2] = lo
+    out[3] = lo
+    for v in range(lo + 1, hi):
+        out[2] = _first(xy, out[2], v, 1)
+        out[3] = _last(xy, out[3], v, 1)
+
+
+@kernel
+def _build(m, work, hull_at, n, alternate, frames, found):
+    """Triangulate points ``0 .. n-1`` (distinct, in cut order, n >= 2).
+
+    The recursion runs on explicit stacks (numba's cache cannot hold a
+    recursive function): ``frames`` rows are (lo, hi, frame of the cut,
+    stage), and each finished group leaves its first and last points in
+    frames 0 and 1 (first0, last0, first1, last1) on ``found``.
+    """
+    xy = m.xy
+    frames[0, 0] = 0
+    frames[0, 1] = n
+    frames[0, 2] = 0
+    frames[0, 3] = 0
+    top = 1
+    nfound = 0
+    while top > 0:
+        lo, hi, f, stage = frames[top - 1, 0], frames[top - 1, 1], frames[top - 1, 2], frames[top - 1, 3]
+        if hi - lo <= 3:
+            _base(m, work, hull_at, lo, hi, found[nfound])
+            nfound += 1
+            top -= 1
+        elif stage < 2:
+            frames[top - 1, 3] = stage + 1
+            mid = lo + ((hi - lo) >> 1)
+            frames[top, 0] = lo if stage == 0 else mid
+            frames[top, 1] = mid if stage == 0 else hi
+            frames[top, 2] = 1 - f if alternate else 0
+            frames[top, 3] = 0
+            top += 1
+        else:
+            a = found[nfound - 2]
+            b = found[nfound - 1]
+            if f == 0:
+                top_edge = _merge(m, work, hull_at, a[1], b[0])
+            else:
+                top_edge = _merge(m, work, hull_at, a[3], b[2])
+            a[0] = _first(xy, a[0], b[0], 0)
+            a[1] = _last(xy, a[1], b[1], 0)
+            a[2] = _first(xy, a[2], b[2], 1)
+            a[3] = _last(xy, a[3], b[3], 1)
+            for k in range(4):
+                _find_hull_edge(m, hull_at, a[k], top_edge)
+            nfound -= 1
+            top -= 1
+
+
+@allocating
+def triangulate_sorted(m, work, n, alternate):
+    """Triangulate points ``0 .. n-1`` of ``m`` (distinct, in cut order) with
+    ghosts around the hull."""
+    if n >= 2:
+        hull_at = np.full(n, -1, dtype=np.int32)
+        _build(m, work, hull_at, n, alternate, np.zeros((130, 4), dtype=np.int64), np.zeros((130, 4), dtype=np.int64))
