@@ -32,7 +32,7 @@ import numpy as np
 
 from .counters import C_CREATED, C_DELETED, C_INCIRCLE, C_ORIENT
 from .jit import allocating, kernel, kernel_inline
-from .mesh import GHOST, bond, lnext, lprev, new_triangle
+from .mesh import GHOST, bond, dest, lnext, lprev, new_triangle, org
 from .predicates import incircle, orient2d
 
 # ------------------------------------------------------------ the cuts
@@ -138,18 +138,12 @@ def cut_order(xy, ids, alternate):
 
 # ------------------------------------------------------------ hull ghosts
 #
-# A ghost's finite edge h runs from the head to the tail of the hull edge it
-# stands for (the hull runs counter-clockwise, the mesh on its left).
+# A ghost's finite edge h runs against the hull edge it stands for (the hull
+# runs counter-clockwise, the mesh on its left): that hull edge runs from
+# _tail(h) = dest(h) to _head(h) = org(h).
 
-
-@kernel_inline
-def _tail(m, h):
-    return m.corner[lprev(h)]
-
-
-@kernel_inline
-def _head(m, h):
-    return m.corner[lnext(h)]
+_tail = dest
+_head = org
 
 
 @kernel_inline
@@ -291,6 +285,21 @@ def _unhull(m, hull_at, h, left):
     return h_ux if left else h_xw
 
 
+@kernel_inline
+def _clear(m, work, hull_at, g, ll, lr, left):
+    """Delete a half's edges from the base's end to its candidate ``g`` while
+    the candidate triangle's circle holds the far corner of the triangle
+    inside the edge; returns the candidate left standing."""
+    while m.corner[m.twin[g]] != GHOST:
+        cand = _head(m, g) if left else _tail(m, g)
+        work[C_INCIRCLE] += 1
+        if not _inside(m.xy, ll, lr, cand, m.corner[m.twin[g]]):
+            break
+        g = _unhull(m, hull_at, g, left)
+        work[C_DELETED] += 1
+    return g
+
+
 @kernel
 def _merge(m, work, hull_at, l, r):
     """Merge the triangulations left and right of a cut; ``l`` is the left
@@ -332,22 +341,11 @@ def _merge(m, work, hull_at, l, r):
         left_ok = _above(xy, ll, lr, ul)
         right_ok = _above(xy, ll, lr, ur)
         if left_ok:
-            # delete left edges ll - ul whose triangle's circle holds its far corner
-            while m.corner[m.twin[gl]] != GHOST:
-                work[C_INCIRCLE] += 1
-                if not _inside(xy, ll, lr, ul, m.corner[m.twin[gl]]):
-                    break
-                gl = _unhull(m, hull_at, gl, True)
-                work[C_DELETED] += 1
-                ul = _head(m, gl)
+            gl = _clear(m, work, hull_at, gl, ll, lr, True)
+            ul = _head(m, gl)
         if right_ok:
-            while m.corner[m.twin[gr]] != GHOST:
-                work[C_INCIRCLE] += 1
-                if not _inside(xy, ll, lr, ur, m.corner[m.twin[gr]]):
-                    break
-                gr = _unhull(m, hull_at, gr, False)
-                work[C_DELETED] += 1
-                ur = _tail(m, gr)
+            gr = _clear(m, work, hull_at, gr, ll, lr, False)
+            ur = _tail(m, gr)
         if not left_ok and not right_ok:
             break
         take_left = left_ok
