@@ -21,12 +21,29 @@ from __future__ import annotations
 
 import numpy as np
 
-from .jit import allocating, kernel, kernel_inline
 from .counters import C_CREATED, C_DUPLICATE, C_ORIENT
 from .divconq import cut_order, triangulate_sorted
 from .insert import lawson, split_edge, split_triangle, star_edges
-from .locate import LOC_FAILED, LOC_ON_EDGE, LOC_ON_VERTEX, LOC_OUTSIDE, finite_start, walk
-from .mesh import GHOST, NO_EDGE, S_NSLOT, Mesh, bond, kill_triangle, lnext, new_mesh, new_triangle
+from .jit import allocating, kernel, kernel_inline
+from .locate import (
+    LOC_FAILED,
+    LOC_ON_EDGE,
+    LOC_ON_VERTEX,
+    LOC_OUTSIDE,
+    finite_start,
+    walk,
+)
+from .mesh import (
+    GHOST,
+    NO_EDGE,
+    S_NSLOT,
+    Mesh,
+    bond,
+    kill_triangle,
+    lnext,
+    new_mesh,
+    new_triangle,
+)
 from .predicates import orient2d
 
 # ------------------------------------------------------------ insertion order
