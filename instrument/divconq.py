@@ -39,17 +39,17 @@ from .predicates import incircle, orient2d
 
 
 @kernel_inline
+def _less(a1, a2, b1, b2):
+    """Lexicographic order of the keys (a1, a2) and (b1, b2)."""
+    return a1 < b1 or (a1 == b1 and a2 < b2)
+
+
+@kernel_inline
 def _before(xy, a, b, f):
     """True if point ``a`` comes before point ``b`` in frame ``f``:
     ``(x, y)`` order for f = 0, ``(y, x)`` order for f = 1."""
     g = 1 - f
-    return xy[a, f] < xy[b, f] or (xy[a, f] == xy[b, f] and xy[a, g] < xy[b, g])
-
-
-@kernel_inline
-def _less(a1, a2, b1, b2):
-    """Lexicographic order of the keys (a1, a2) and (b1, b2)."""
-    return a1 < b1 or (a1 == b1 and a2 < b2)
+    return _less(xy[a, f], xy[a, g], xy[b, f], xy[b, g])
 
 
 @kernel_inline
@@ -354,7 +354,7 @@ def _merge(m, work, hull_at, l, r):
             take_left = not _inside(xy, ul, ll, lr, ur)
         work[C_CREATED] += 1
         if take_left:
-            # ghost (ul, ll, GHOST) becomes triangle (ul, ll, lr)
+            # the ghost of ll -> ul takes lr as its third corner
             nxt = _next_ccw(m, gl)
             m.corner[gl] = lr
             bond(m, lnext(gl), base)
@@ -362,7 +362,7 @@ def _merge(m, work, hull_at, l, r):
             gl = nxt
             ll = ul
         else:
-            # ghost (lr, ur, GHOST) becomes triangle (lr, ur, ll)
+            # the ghost of ur -> lr takes ll as its third corner
             nxt = _prev_cw(m, gr)
             m.corner[gr] = ll
             bond(m, lprev(gr), base)

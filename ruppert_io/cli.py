@@ -113,7 +113,7 @@ exponent: -a1e-4 is a maximum area of 0.0001.
     -S[n]   Add at most n Steiner points (no number: none).
     -s      Recover segments by splitting them rather than by flipping.
     -X      Do not use exact arithmetic (for comparison only).
-    -i -F -l  Triangle's choice of Delaunay algorithm (accepted).
+    -i -l   Incremental Delaunay; vertical cuts only (-F: divide and conquer).
 
   Output
     -A      Give each triangle the attribute of the region it lies in.
@@ -494,8 +494,9 @@ def _phase_lines(o, say, ntriangles: int) -> None:
     if o.r:
         say("Reconstructing mesh.")
     else:
-        # The engine builds the triangulation by incremental insertion.
-        say("Constructing Delaunay triangulation by incremental method.")
+        # the method that ran: -F has no sweepline here and runs divide and conquer
+        method = "incremental" if o.i else "divide-and-conquer"
+        say(f"Constructing Delaunay triangulation by {method} method.")
     if o.uses_segments and not o.r:
         say("Recovering segments in Delaunay triangulation.")
     if o.p and not o.r and not (o.O and o.c):

@@ -435,3 +435,9 @@ def test_statistics_equal_triangles_with_our_engine(name, switches, tmp_path, mo
     assert section(ours, "Statistics:", "Algorithmic statistics:") == section(
         text, "Statistics:", "Memory allocation statistics:"
     )
+
+
+@pytest.mark.parametrize(("switch", "method"), [("", "divide-and-conquer"), ("i", "incremental"), ("l", "divide-and-conquer")])
+def test_phase_line_names_the_delaunay_method_that_ran(workdir, capsys, switch, method):
+    assert cli.main([f"-pV{switch}", "A.poly"]) == 0
+    assert f"Constructing Delaunay triangulation by {method} method.\n" in capsys.readouterr().out
