@@ -3,6 +3,14 @@
 ``import instrument as triangle`` gives the `triangle` package's API.
 """
 
+from . import purepython
+
+if purepython.requested():
+    purepython.enable()
+from .core import predicates as _predicates  # noqa: E402  (the kernels must be built)
+
+purepython.require_compiled(_predicates)
+
 from .compat import convex_hull, delaunay, voronoi
 from .driver import triangulate
 from .output import Result

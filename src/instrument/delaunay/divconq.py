@@ -1,3 +1,4 @@
+# cython: language_level=3
 """Delaunay triangulation by divide and conquer (Guibas and Stolfi's merge,
 Dwyer's alternating cuts), the method Triangle uses by default.
 
@@ -30,43 +31,63 @@ from __future__ import annotations
 
 import numpy as np
 
-from .counters import C_CREATED, C_DELETED, C_INCIRCLE, C_ORIENT
-from .jit import allocating, kernel, kernel_inline
-from .mesh import GHOST, bond, dest, lnext, lprev, new_triangle, org
-from .predicates import incircle, orient2d
+import cython
+from cython.cimports.instrument.core.mesh import GHOST, Index, Mesh, bond, dest, lnext, lprev, new_triangle, org
+from cython.cimports.instrument.core.predicates import incircle, orient2d
+from cython.cimports.instrument.counters import C_CREATED, C_DELETED, C_INCIRCLE, C_ORIENT
 
 # ------------------------------------------------------------ the cuts
 
 
-@kernel_inline
-def _less(a1, a2, b1, b2):
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _less(a1: cython.double, a2: cython.double, b1: cython.double, b2: cython.double) -> cython.bint:
     """Lexicographic order of the keys (a1, a2) and (b1, b2)."""
     return a1 < b1 or (a1 == b1 and a2 < b2)
 
 
-@kernel_inline
-def _before(xy, a, b, f):
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _before(xy: cython.double[:, ::1], a: Index, b: Index, f: Index) -> cython.bint:
     """True if point ``a`` comes before point ``b`` in frame ``f``:
     ``(x, y)`` order for f = 0, ``(y, x)`` order for f = 1."""
-    g = 1 - f
+    g: Index = 1 - f
     return _less(xy[a, f], xy[a, g], xy[b, f], xy[b, g])
 
 
-@kernel_inline
-def _swap(pts, ids, i, j):
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _swap(pts: cython.double[:, ::1], ids: cython.longlong[::1], i: Index, j: Index) -> cython.void:
     ids[i], ids[j] = ids[j], ids[i]
     for c in range(2):
         pts[i, c], pts[j, c] = pts[j, c], pts[i, c]
 
 
-@kernel
-def _select(pts, ids, lo, hi, k, f):
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _select(pts: cython.double[:, ::1], ids: cython.longlong[::1], lo: Index, hi: Index, k: Index, f: Index) -> cython.void:
     """Quickselect: reorder rows ``lo .. hi-1`` of ``pts`` (and ``ids`` with
     them) so that row ``k`` holds the point that sorting in frame ``f`` would
     put there, the points before it in front and the points after it behind.
     The points must be distinct.  Rows move with their ids, so comparisons
     read memory in sequence."""
-    g = 1 - f
+    g: Index = 1 - f
+    a1: cython.double
+    a2: cython.double
+    b1: cython.double
+    b2: cython.double
+    c1: cython.double
+    c2: cython.double
+    i: Index
+    j: Index
+    mid: Index
     while hi - lo > 2:
         mid = (lo + hi - 1) >> 1
         # the median of three keys is the pivot
@@ -100,25 +121,21 @@ def _select(pts, ids, lo, hi, k, f):
         _swap(pts, ids, lo, lo + 1)
 
 
-@allocating
-def cut_order(xy, ids, alternate):
-    """Order ``ids`` (distinct points sorted in frame 0) for the recursion, in
-    place, and return their coordinates in that order: each group of more
-    than three is split at ``size >> 1`` into halves separated in the frame
-    of its cut, the frames alternating from 0 at the top (``alternate``) or
-    always 0; groups of two or three end in frame 0 order."""
-    n = ids.shape[0]
-    pts = np.empty((n, 2), dtype=np.float64)
-    for i in range(n):
-        pts[i, 0] = xy[ids[i], 0]
-        pts[i, 1] = xy[ids[i], 1]
-    if not alternate or n <= 3:
-        return pts
-    stack = np.empty((130, 3), dtype=np.int64)  # depth <= 64
-    half = n >> 1
-    stack[0] = (0, half, 1)
-    stack[1] = (half, n, 1)
-    top = 2
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _cut(pts: cython.double[:, ::1], ids: cython.longlong[::1], stack: cython.longlong[:, ::1]) -> cython.void:
+    """The recursion of ``cut_order`` on an explicit stack (depth <= 64)."""
+    n: Index = ids.shape[0]
+    half: Index = n >> 1
+    stack[0, 0], stack[0, 1], stack[0, 2] = 0, half, 1
+    stack[1, 0], stack[1, 1], stack[1, 2] = half, n, 1
+    top: Index = 2
+    lo: Index
+    hi: Index
+    f: Index
+    size: Index
+    mid: Index
     while top > 0:
         top -= 1
         lo, hi, f = stack[top, 0], stack[top, 1], stack[top, 2]
@@ -130,9 +147,27 @@ def cut_order(xy, ids, alternate):
             continue
         mid = lo + (size >> 1)
         _select(pts, ids, lo, hi, mid, f)
-        stack[top] = (lo, mid, 1 - f)
-        stack[top + 1] = (mid, hi, 1 - f)
+        stack[top, 0], stack[top, 1], stack[top, 2] = lo, mid, 1 - f
+        stack[top + 1, 0], stack[top + 1, 1], stack[top + 1, 2] = mid, hi, 1 - f
         top += 2
+
+
+def cut_order(xy, ids, alternate: bool):
+    """Order ``ids`` (int64, distinct points sorted in frame 0) for the
+    recursion, in place, and return their coordinates in that order: each
+    group of more than three is split at ``size >> 1`` into halves separated
+    in the frame of its cut, the frames alternating from 0 at the top
+    (``alternate``) or always 0; groups of two or three end in frame 0 order."""
+    pts = np.ascontiguousarray(np.asarray(xy)[ids], dtype=np.float64)
+    n = ids.shape[0]
+    if not alternate or n <= 3:
+        return pts
+    stack = np.empty((130, 3), dtype=np.int64)
+    p: cython.double[:, ::1] = pts
+    i: cython.longlong[::1] = ids
+    s: cython.longlong[:, ::1] = stack
+    with cython.nogil:
+        _cut(p, i, s)
     return pts
 
 
@@ -140,35 +175,44 @@ def cut_order(xy, ids, alternate):
 #
 # A ghost's finite edge h runs against the hull edge it stands for (the hull
 # runs counter-clockwise, the mesh on its left): that hull edge runs from
-# _tail(h) = dest(h) to _head(h) = org(h).
-
-_tail = dest
-_head = org
+# dest(h) (its tail) to org(h) (its head).
 
 
-@kernel_inline
-def _next_ccw(m, h):
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _next_ccw(m: Mesh, h: Index) -> Index:
     """The ghost of the next hull edge counter-clockwise."""
     return lprev(m.twin[lprev(h)])
 
 
-@kernel_inline
-def _prev_cw(m, h):
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _prev_cw(m: Mesh, h: Index) -> Index:
     """The ghost of the previous hull edge (clockwise)."""
     return lnext(m.twin[lnext(h)])
 
 
-@kernel_inline
-def _ghost(m, hull_at, a, b):
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _ghost(m: Mesh, hull_at: cython.int[::1], a: Index, b: Index) -> Index:
     """A ghost on hull edge ``a -> b``; returns its finite edge."""
-    g = new_triangle(m, b, a, GHOST)
-    h = 3 * g + 2
+    g: Index = new_triangle(m, b, a, GHOST)
+    h: Index = 3 * g + 2
     hull_at[a] = h
     return h
 
 
-@kernel_inline
-def _link(m, h1, h2):
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _link(m: Mesh, h1: Index, h2: Index) -> cython.void:
     """Make hull edge ``h2`` follow ``h1`` counter-clockwise."""
     bond(m, lprev(h1), lnext(h2))
 
@@ -176,26 +220,32 @@ def _link(m, h1, h2):
 # ------------------------------------------------------------ base cases
 
 
-@kernel
-def _two(m, hull_at, a, b):
-    h_ba = _ghost(m, hull_at, b, a)
-    h_ab = _ghost(m, hull_at, a, b)
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _two(m: Mesh, hull_at: cython.int[::1], a: Index, b: Index) -> cython.void:
+    h_ba: Index = _ghost(m, hull_at, b, a)
+    h_ab: Index = _ghost(m, hull_at, a, b)
     bond(m, h_ab, h_ba)
     _link(m, h_ab, h_ba)
     _link(m, h_ba, h_ab)
 
 
-@kernel
-def _three(m, work, hull_at, a, b, c):
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _three(m: Mesh, hull_at: cython.int[::1], a: Index, b: Index, c: Index) -> cython.void:
     """Points in frame 0 order: a triangle, or a chain of two edges if collinear."""
     xy = m.xy
-    work[C_ORIENT] += 1
-    s = orient2d(xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[c, 0], xy[c, 1])
+    m.work[C_ORIENT] += 1
+    s: cython.double = orient2d(xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[c, 0], xy[c, 1])
+    h_ab: Index
+    h_bc: Index
     if s == 0.0:
         h_ab = _ghost(m, hull_at, a, b)
         h_bc = _ghost(m, hull_at, b, c)
-        h_cb = _ghost(m, hull_at, c, b)
-        h_ba = _ghost(m, hull_at, b, a)
+        h_cb: Index = _ghost(m, hull_at, c, b)
+        h_ba: Index = _ghost(m, hull_at, b, a)
         bond(m, h_ab, h_ba)
         bond(m, h_bc, h_cb)
         _link(m, h_ab, h_bc)
@@ -205,11 +255,11 @@ def _three(m, work, hull_at, a, b, c):
         return
     if s < 0.0:
         b, c = c, b
-    t = new_triangle(m, a, b, c)
-    work[C_CREATED] += 1
+    t: Index = new_triangle(m, a, b, c)
+    m.work[C_CREATED] += 1
     h_ab = _ghost(m, hull_at, a, b)
     h_bc = _ghost(m, hull_at, b, c)
-    h_ca = _ghost(m, hull_at, c, a)
+    h_ca: Index = _ghost(m, hull_at, c, a)
     bond(m, 3 * t + 2, h_ab)
     bond(m, 3 * t + 0, h_bc)
     bond(m, 3 * t + 1, h_ca)
@@ -221,58 +271,71 @@ def _three(m, work, hull_at, a, b, c):
 # ------------------------------------------------------------ the merge
 
 
-@kernel_inline
-def _below(xy, a, b, p):
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _below(xy: cython.double[:, ::1], a: Index, b: Index, p: Index) -> cython.bint:
     """True if ``p`` lies strictly right of the line ``a -> b``."""
     return orient2d(xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[p, 0], xy[p, 1]) < 0.0
 
 
-@kernel_inline
-def _above(xy, a, b, p):
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _above(xy: cython.double[:, ::1], a: Index, b: Index, p: Index) -> cython.bint:
     return orient2d(xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[p, 0], xy[p, 1]) > 0.0
 
 
-@kernel_inline
-def _inside(xy, a, b, c, d):
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _inside(xy: cython.double[:, ::1], a: Index, b: Index, c: Index, d: Index) -> cython.bint:
     """True if ``d`` is strictly inside the circle through counter-clockwise ``a, b, c``."""
     return incircle(xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[c, 0], xy[c, 1], xy[d, 0], xy[d, 1]) > 0.0
 
 
-@kernel
-def _unhull(m, hull_at, h, left):
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _unhull(m: Mesh, hull_at: cython.int[::1], h: Index, left: cython.bint) -> Index:
     """Delete the triangle inside hull edge ``h`` from its half: the hull edge
     ``u -> w`` of the triangle ``(u, w, x)`` becomes the two hull edges
     ``u -> x -> w``.  Returns the finite edge of the ghost on the seam side:
     ``u -> x`` for the left half, ``x -> w`` for the right."""
-    t_in = m.twin[h]
-    x = m.corner[t_in]
-    u = _tail(m, h)
-    w = _head(m, h)
-    n_ux = m.twin[lprev(t_in)]  # across u -> x (t_in's edge x -> u)
-    n_xw = m.twin[lnext(t_in)]  # across x -> w (t_in's edge w -> x)
-    before = m.twin[lnext(h)]  # the ghost chain on both sides; the seam
-    after = m.twin[lprev(h)]  # side's pointer is stale (rebonded by the knit)
+    t_in: Index = m.twin[h]
+    x: Index = m.corner[t_in]
+    u: Index = dest(m, h)
+    w: Index = org(m, h)
+    n_ux: Index = m.twin[lprev(t_in)]  # across u -> x (t_in's edge x -> u)
+    n_xw: Index = m.twin[lnext(t_in)]  # across x -> w (t_in's edge w -> x)
+    before: Index = m.twin[lnext(h)]  # the ghost chain on both sides; the seam
+    after: Index = m.twin[lprev(h)]  # side's pointer is stale (rebonded by the knit)
     # Slots and rotations as Triangle's flip leaves them (found by comparing
     # its output order): relative to the rotation of the handle on the edge
     # u - w in each slot, the ghost of u -> x is (org, dest, apex) =
     # (GHOST, x, u) and the ghost of x -> w is (x, GHOST, w); the right half
     # puts the first in the triangle's slot, the left half the second.
+    s_ux: Index
+    s_xw: Index
     if left:
         s_ux, s_xw = h, t_in
     else:
         s_ux, s_xw = t_in, h
-    k = s_ux % 3
-    g = s_ux - k
+    k: Index = s_ux % 3
+    g: Index = s_ux - k
     m.corner[g + k] = u
     m.corner[g + (k + 1) % 3] = GHOST
     m.corner[g + (k + 2) % 3] = x
-    h_ux = g + (k + 1) % 3
+    h_ux: Index = g + (k + 1) % 3
     k = s_xw % 3
     g = s_xw - k
     m.corner[g + k] = w
     m.corner[g + (k + 1) % 3] = x
     m.corner[g + (k + 2) % 3] = GHOST
-    h_xw = g + (k + 2) % 3
+    h_xw: Index = g + (k + 2) % 3
     bond(m, h_ux, n_ux)
     bond(m, h_xw, n_xw)
     if left:
@@ -285,74 +348,87 @@ def _unhull(m, hull_at, h, left):
     return h_ux if left else h_xw
 
 
-@kernel_inline
-def _clear(m, work, hull_at, g, ll, lr, left):
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _clear(m: Mesh, hull_at: cython.int[::1], g: Index, ll: Index, lr: Index, left: cython.bint) -> Index:
     """Delete a half's edges from the base's end to its candidate ``g`` while
     the candidate triangle's circle holds the far corner of the triangle
     inside the edge; returns the candidate left standing."""
+    cand: Index
     while m.corner[m.twin[g]] != GHOST:
-        cand = _head(m, g) if left else _tail(m, g)
-        work[C_INCIRCLE] += 1
+        cand = org(m, g) if left else dest(m, g)
+        m.work[C_INCIRCLE] += 1
         if not _inside(m.xy, ll, lr, cand, m.corner[m.twin[g]]):
             break
         g = _unhull(m, hull_at, g, left)
-        work[C_DELETED] += 1
+        m.work[C_DELETED] += 1
     return g
 
 
-@kernel
-def _merge(m, work, hull_at, l, r):
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _merge(m: Mesh, hull_at: cython.int[::1], l: Index, r: Index) -> Index:
     """Merge the triangulations left and right of a cut; ``l`` is the left
     half's last vertex and ``r`` the right half's first, in the cut's frame."""
     xy = m.xy
-    hl = hull_at[l]  # hull edge leaving l (counter-clockwise)
-    hr = hull_at[r]
+    hl: Index = hull_at[l]  # hull edge leaving l (counter-clockwise)
+    hr: Index = hull_at[r]
     # Lower common tangent: walk l clockwise and r counter-clockwise while
     # the next hull vertex lies strictly below the line l -> r.
-    moved = True
+    moved: cython.bint = True
+    pl: Index
     while moved:
         moved = False
         pl = _prev_cw(m, hl)
-        work[C_ORIENT] += 1
-        if _below(xy, l, r, _tail(m, pl)):
+        m.work[C_ORIENT] += 1
+        if _below(xy, l, r, dest(m, pl)):
             hl = pl
-            l = _tail(m, pl)
+            l = dest(m, pl)
             moved = True
-        work[C_ORIENT] += 1
-        if _below(xy, l, r, _head(m, hr)):
-            r = _head(m, hr)
+        m.work[C_ORIENT] += 1
+        if _below(xy, l, r, org(m, hr)):
+            r = org(m, hr)
             hr = _next_ccw(m, hr)
             moved = True
-    gl = hl  # left candidate: the left hull's edge ll -> ul
-    gr = _prev_cw(m, hr)  # right candidate: the right hull's edge ur -> lr
-    outer = _prev_cw(m, hl)
-    g = new_triangle(m, l, GHOST, r)  # Triangle's rotation (matters to the pool order only)
-    bottom = 3 * g + 1
+    gl: Index = hl  # left candidate: the left hull's edge ll -> ul
+    gr: Index = _prev_cw(m, hr)  # right candidate: the right hull's edge ur -> lr
+    outer: Index = _prev_cw(m, hl)
+    g: Index = new_triangle(m, l, GHOST, r)  # Triangle's rotation (matters to the pool order only)
+    bottom: Index = 3 * g + 1
     hull_at[l] = bottom
     _link(m, outer, bottom)
     _link(m, bottom, hr)
-    base = bottom  # the edge lr -> ll seen from below
-    ll = l
-    lr = r
+    base: Index = bottom  # the edge lr -> ll seen from below
+    ll: Index = l
+    lr: Index = r
+    ul: Index
+    ur: Index
+    nxt: Index
+    left_ok: cython.bint
+    right_ok: cython.bint
+    take_left: cython.bint
     while True:
-        ul = _head(m, gl)
-        ur = _tail(m, gr)
-        work[C_ORIENT] += 2
+        ul = org(m, gl)
+        ur = dest(m, gr)
+        m.work[C_ORIENT] += 2
         left_ok = _above(xy, ll, lr, ul)
         right_ok = _above(xy, ll, lr, ur)
         if left_ok:
-            gl = _clear(m, work, hull_at, gl, ll, lr, True)
-            ul = _head(m, gl)
+            gl = _clear(m, hull_at, gl, ll, lr, True)
+            ul = org(m, gl)
         if right_ok:
-            gr = _clear(m, work, hull_at, gr, ll, lr, False)
-            ur = _tail(m, gr)
+            gr = _clear(m, hull_at, gr, ll, lr, False)
+            ur = dest(m, gr)
         if not left_ok and not right_ok:
             break
         take_left = left_ok
         if left_ok and right_ok:
-            work[C_INCIRCLE] += 1
+            m.work[C_INCIRCLE] += 1
             take_left = not _inside(xy, ul, ll, lr, ur)
-        work[C_CREATED] += 1
+        m.work[C_CREATED] += 1
         if take_left:
             # the ghost of ll -> ul takes lr as its third corner
             nxt = _next_ccw(m, gl)
@@ -369,22 +445,25 @@ def _merge(m, work, hull_at, l, r):
             base = lnext(gr)
             gr = nxt
             lr = ur
-    top = _ghost(m, hull_at, lr, ll)
+    top: Index = _ghost(m, hull_at, lr, ll)
     bond(m, top, base)
     _link(m, gr, top)
     _link(m, top, gl)
     return top
 
 
-@kernel_inline
-def _find_hull_edge(m, hull_at, v, h):
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _find_hull_edge(m: Mesh, hull_at: cython.int[::1], v: Index, h: Index) -> cython.void:
     """Make ``hull_at[v]`` the hull edge leaving ``v``, walking from hull edge
     ``h`` if it is stale.  Needed for a merged half's extreme vertices only,
     which the hull passes once; ``hull_at`` goes stale where a deletion left
     a half's hull passing a vertex twice, as a tree of edges."""
-    g = hull_at[v]
-    if m.corner[g] != GHOST or _tail(m, g) != v:
-        while _tail(m, h) != v:
+    g: Index = hull_at[v]
+    if m.corner[g] != GHOST or dest(m, g) != v:
+        while dest(m, h) != v:
             h = _next_ccw(m, h)
         hull_at[v] = h
 
@@ -392,54 +471,75 @@ def _find_hull_edge(m, hull_at, v, h):
 # ------------------------------------------------------------ recursion
 
 
-@kernel_inline
-def _first(xy, a, b, f):
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _first(xy: cython.double[:, ::1], a: Index, b: Index, f: Index) -> Index:
     return b if _before(xy, b, a, f) else a
 
 
-@kernel_inline
-def _last(xy, a, b, f):
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _last(xy: cython.double[:, ::1], a: Index, b: Index, f: Index) -> Index:
     return b if _before(xy, a, b, f) else a
 
 
-@kernel
-def _base(m, work, hull_at, lo, hi, out):
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _base(m: Mesh, hull_at: cython.int[::1], lo: Index, hi: Index, found: cython.longlong[:, ::1], row: Index) -> cython.void:
     """Triangulate a group of two or three (in frame 0 order); write its
-    first and last points in frames 0 and 1 to ``out``."""
+    first and last points in frames 0 and 1 to ``found[row]``."""
     xy = m.xy
     if hi - lo == 2:
         _two(m, hull_at, lo, lo + 1)
     else:
-        _three(m, work, hull_at, lo, lo + 1, lo + 2)
-    out[0] = lo
-    out[1] = hi - 1
-    out[2] = lo
-    out[3] = lo
+        _three(m, hull_at, lo, lo + 1, lo + 2)
+    found[row, 0] = lo
+    found[row, 1] = hi - 1
+    found[row, 2] = lo
+    found[row, 3] = lo
     for v in range(lo + 1, hi):
-        out[2] = _first(xy, out[2], v, 1)
-        out[3] = _last(xy, out[3], v, 1)
+        found[row, 2] = _first(xy, found[row, 2], v, 1)
+        found[row, 3] = _last(xy, found[row, 3], v, 1)
 
 
-@kernel
-def _build(m, work, hull_at, n, alternate, frames, found):
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _build(
+    m: Mesh, hull_at: cython.int[::1], n: Index, alternate: cython.bint,
+    frames: cython.longlong[:, ::1], found: cython.longlong[:, ::1],
+) -> cython.void:
     """Triangulate points ``0 .. n-1`` (distinct, in cut order, n >= 2).
 
-    The recursion runs on explicit stacks (numba's cache cannot hold a
-    recursive function): ``frames`` rows are (lo, hi, frame of the cut,
-    stage), and each finished group leaves its first and last points in
-    frames 0 and 1 (first0, last0, first1, last1) on ``found``.
+    The recursion runs on explicit stacks: ``frames`` rows are (lo, hi,
+    frame of the cut, stage), and each finished group leaves its first and
+    last points in frames 0 and 1 (first0, last0, first1, last1) on
+    ``found``.
     """
     xy = m.xy
     frames[0, 0] = 0
     frames[0, 1] = n
     frames[0, 2] = 0
     frames[0, 3] = 0
-    top = 1
-    nfound = 0
+    top: Index = 1
+    nfound: Index = 0
+    lo: Index
+    hi: Index
+    f: Index
+    stage: Index
+    mid: Index
+    a: Index
+    b: Index
+    top_edge: Index
     while top > 0:
         lo, hi, f, stage = frames[top - 1, 0], frames[top - 1, 1], frames[top - 1, 2], frames[top - 1, 3]
         if hi - lo <= 3:
-            _base(m, work, hull_at, lo, hi, found[nfound])
+            _base(m, hull_at, lo, hi, found, nfound)
             nfound += 1
             top -= 1
         elif stage < 2:
@@ -451,26 +551,32 @@ def _build(m, work, hull_at, n, alternate, frames, found):
             frames[top, 3] = 0
             top += 1
         else:
-            a = found[nfound - 2]
-            b = found[nfound - 1]
+            a = nfound - 2
+            b = nfound - 1
             if f == 0:
-                top_edge = _merge(m, work, hull_at, a[1], b[0])
+                top_edge = _merge(m, hull_at, found[a, 1], found[b, 0])
             else:
-                top_edge = _merge(m, work, hull_at, a[3], b[2])
-            a[0] = _first(xy, a[0], b[0], 0)
-            a[1] = _last(xy, a[1], b[1], 0)
-            a[2] = _first(xy, a[2], b[2], 1)
-            a[3] = _last(xy, a[3], b[3], 1)
+                top_edge = _merge(m, hull_at, found[a, 3], found[b, 2])
+            found[a, 0] = _first(xy, found[a, 0], found[b, 0], 0)
+            found[a, 1] = _last(xy, found[a, 1], found[b, 1], 0)
+            found[a, 2] = _first(xy, found[a, 2], found[b, 2], 1)
+            found[a, 3] = _last(xy, found[a, 3], found[b, 3], 1)
             for k in range(4):
-                _find_hull_edge(m, hull_at, a[k], top_edge)
+                _find_hull_edge(m, hull_at, found[a, k], top_edge)
             nfound -= 1
             top -= 1
 
 
-@allocating
-def triangulate_sorted(m, work, n, alternate):
+def triangulate_sorted(m: Mesh, n: int, alternate: bool) -> None:
     """Triangulate points ``0 .. n-1`` of ``m`` (distinct, in cut order) with
-    ghosts around the hull."""
-    if n >= 2:
-        hull_at = np.full(n, -1, dtype=np.int32)
-        _build(m, work, hull_at, n, alternate, np.zeros((130, 4), dtype=np.int64), np.zeros((130, 4), dtype=np.int64))
+    ghosts around the hull; ``m`` has room for 2n + 8 triangles."""
+    if n < 2:
+        return
+    hull_at = np.full(n, -1, dtype=np.int32)
+    h: cython.int[::1] = hull_at
+    frames: cython.longlong[:, ::1] = np.zeros((130, 4), dtype=np.int64)
+    found: cython.longlong[:, ::1] = np.zeros((130, 4), dtype=np.int64)
+    count: Index = n
+    alt: cython.bint = alternate
+    with cython.nogil:
+        _build(m, h, count, alt, frames, found)

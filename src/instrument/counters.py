@@ -1,3 +1,4 @@
+# cython: language_level=3
 """Work counters: one int64 array, always on, with a name for every slot.
 
 Kernels increment ``work[C_NAME]``; ``as_dict`` gives the Python view that
@@ -19,6 +20,8 @@ from __future__ import annotations
 
 import numpy as np
 
+import cython
+
 NAMES = (
     "triangles_created",
     "triangles_deleted",
@@ -37,23 +40,25 @@ NAMES = (
     "undone_triangles",
 )
 
-(
-    C_CREATED,
-    C_DELETED,
-    C_INCIRCLE,
-    C_ORIENT,
-    C_CIRCUMCENTER,
-    C_FLIP,
-    C_WALK,
-    C_SEGMENT_SPLIT,
-    C_STEINER,
-    C_REJECTED,
-    C_DELETED_VERTEX,
-    C_QUEUE_POP,
-    C_STALE_POP,
-    C_DUPLICATE,
-    C_UNDONE,
-) = range(len(NAMES))
+# The slots; compiled, they are counters.pxd's enum (the tests check both agree).
+if not cython.compiled:
+    (
+        C_CREATED,
+        C_DELETED,
+        C_INCIRCLE,
+        C_ORIENT,
+        C_CIRCUMCENTER,
+        C_FLIP,
+        C_WALK,
+        C_SEGMENT_SPLIT,
+        C_STEINER,
+        C_REJECTED,
+        C_DELETED_VERTEX,
+        C_QUEUE_POP,
+        C_STALE_POP,
+        C_DUPLICATE,
+        C_UNDONE,
+    ) = range(len(NAMES))
 
 
 def new_work() -> np.ndarray:

@@ -87,7 +87,8 @@ def start(
     attributes interpolate."""
     n = xy.shape[0]
     spare = max(spare_vertices, 16)
-    m, dup = delaunay(xy, work, method=method, seed=seed, extra_vertices=spare, extra_triangles=2 * spare)
+    cm, dup = delaunay(xy, work, method=method, seed=seed, extra_vertices=spare, extra_triangles=2 * spare)
+    m = _numba_mesh(cm)
     cap = n + spare
     vmark = np.zeros(cap, dtype=np.int32)
     vmark[:n] = markers
@@ -103,6 +104,14 @@ def start(
         n_triangles_initial=int(m.size[3]),
     )
     return mesher
+
+
+def _numba_mesh(cm) -> Mesh:
+    """The compiled stages' mesh as the numba stages' tuple (the same arrays).
+    Transitional: goes when the last numba stage is ported."""
+    size = np.array([cm.nvert, cm.nslot, cm.nfree, cm.nlive], dtype=np.int64)
+    a = cm.arrays()
+    return Mesh(xy=a["xy"], corner=a["corner"], twin=a["twin"], seg=a["seg"], stamp=a["stamp"], free=a["free"], size=size)
 
 
 def clean_segments(segments: np.ndarray, xy: np.ndarray, dup: np.ndarray, warnings: list[str]) -> np.ndarray:

@@ -1,0 +1,288 @@
+# cython: language_level=3
+"""The triangulation as flat arrays, and the primitives that read and edit it.
+
+Conventions (written down once, here, and used everywhere else)
+----------------------------------------------------------------
+* Triangle ``t`` has corners ``corner[3t], corner[3t+1], corner[3t+2]`` in
+  counter-clockwise order.
+* Edge ``e = 3t + k`` is the edge *opposite* corner ``k``: its apex is
+  ``corner[e]``, it runs from ``org(e) = corner[lnext(e)]`` to
+  ``dest(e) = corner[lprev(e)]``, and the apex lies to its left.  This is
+  Triangle's handle convention, so neighbour ``k`` of a triangle is the one
+  across the edge opposite corner ``k`` (the ``.neigh`` convention).
+* ``twin[e]`` is the same edge seen from the neighbouring triangle (reversed),
+  or ``NO_EDGE`` on the boundary of the mesh.
+* ``seg[e]`` is the subsegment record of a constrained edge (the same on both
+  sides), or ``NO_SEG``.
+* ``GHOST`` (-1) is the vertex at infinity.  While a Delaunay triangulation is
+  built, every convex-hull edge has a ghost triangle ``(a, b, GHOST)`` on its
+  outer side, so that points outside the hull are handled by the same code as
+  points inside it (Triangle's "outer space", CGAL's infinite vertex).
+* ``stamp[t] > 0`` for a live triangle; killing negates it and reviving adds
+  one, so a queue entry ``(t, stamp)`` is current iff ``stamp[t]`` still
+  equals the stored value.  Dead slots are kept on the ``free`` stack and
+  reused last-in first-out, as Triangle's pools do.
+
+One object, ``Mesh``, holds every array indexed by a vertex or by a
+triangle slot: the stages add no side tables of their own.  Growing the mesh
+(``grow_vertices``, ``grow_triangles``) therefore grows every such array at
+once, and no kernel can index a table that growth left behind.  Optional
+tables (per-triangle area bounds and attributes, the vertices' attribute
+records) have no rows when the run does not use them, and grow only if
+they have rows.  Kernels never allocate: when a mesh is full they report
+it, and the Python side grows the mesh and calls them again.
+
+The primitives below are compiled from ``mesh.pxd`` (where every kernel
+inlines them); the definitions at the end of this file are the same
+functions for the pure-Python mode.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+import cython
+
+from ..counters import new_work
+
+if not cython.compiled:  # compiled, these are mesh.pxd's
+    Index = cython.Py_ssize_t  # a vertex, triangle slot or edge number
+    GHOST = -1  # the vertex at infinity
+    NO_EDGE = -1  # no twin: the edge is on the boundary of the mesh
+    NO_SEG = -1  # the edge is not a subsegment
+    # kinds of vertex (Mesh.vtype), as refinement classifies them
+    V_INPUT = 0
+    V_SEGMENT = 1  # made by splitting a subsegment
+    V_FREE = 2  # made by splitting a triangle
+    V_DEAD = 3  # a free vertex deleted again (left out of the output)
+
+#: Columns of Mesh.parent: a new vertex's attributes are
+#: a0 + s (a1 - a0) + t (a2 - a0) of vertices p0, p1, p2 (p0 < 0: zeros).
+PARENT_COLUMNS = 5
+
+
+def _widened(a, rows: int, fill):
+    """``a`` with ``rows`` rows, the new ones set to ``fill``."""
+    a = np.asarray(a)
+    out = np.full((rows,) + a.shape[1:], fill, dtype=a.dtype)
+    out[: a.shape[0]] = a
+    return out
+
+
+@cython.cclass
+class Mesh:
+    """A triangulation being built: vertices, triangle slots and every
+    per-vertex and per-triangle table (see the module docstring and
+    ``mesh.pxd`` for each array's meaning)."""
+
+    def __init__(
+        self,
+        xy,
+        triangles: int,
+        *,
+        vertices: int | None = None,
+        parents: bool = False,
+        area_bounds: bool = False,
+        attributes: bool = False,
+        work=None,
+    ):
+        """A mesh with no triangles, holding the vertices ``xy`` (which it
+        copies), with room for ``vertices`` vertices in all (default: just
+        those) and ``triangles`` triangle slots, and the optional tables
+        asked for."""
+        xy = np.asarray(xy, dtype=np.float64).reshape(-1, 2)
+        n = xy.shape[0]
+        cap = max(n, int(vertices if vertices is not None else n), 1)
+        slots = max(int(triangles), 4)
+        self.xy = _widened(xy, cap, 0.0)
+        self.vmark = np.zeros(cap, dtype=np.int32)
+        self.vtri = np.full(cap, -1, dtype=np.int64)
+        self.vtype = np.zeros(cap, dtype=np.int8)
+        self.parent = np.full((cap if parents else 0, PARENT_COLUMNS), -1.0)
+        self.vslot = np.full(cap, -1, dtype=np.int64)
+        self.corner = np.full(3 * slots, GHOST, dtype=np.int32)
+        self.twin = np.full(3 * slots, NO_EDGE, dtype=np.int32)
+        self.seg = np.full(3 * slots, NO_SEG, dtype=np.int32)
+        self.stamp = np.zeros(slots, dtype=np.int32)
+        self.free = np.zeros(slots, dtype=np.int32)
+        self.area_bound = np.full(slots if area_bounds else 0, -1.0)
+        self.attribute = np.zeros(slots if attributes else 0)
+        self.tflag = np.zeros(slots, dtype=np.int8)
+        self.nvert = n
+        self.nslot = 0
+        self.nfree = 0
+        self.nlive = 0
+        self.work = new_work() if work is None else work
+        self.rng = 12345
+
+    # ------------------------------------------------------------ capacity
+
+    @property
+    def vertex_capacity(self) -> int:
+        return self.xy.shape[0]
+
+    @property
+    def triangle_capacity(self) -> int:
+        return self.stamp.shape[0]
+
+    def grow_vertices(self, room: int, *, exact: bool = False) -> None:
+        """Make room for at least ``room`` more vertices (doubling, so that
+        repeated growth is amortised, unless ``exact``), in every
+        per-vertex table."""
+        want = self.nvert + int(room)
+        cap = want if exact else max(2 * self.xy.shape[0], want)
+        if want <= self.xy.shape[0]:
+            return
+        self.xy = _widened(self.xy, cap, 0.0)
+        self.vmark = _widened(self.vmark, cap, 0)
+        self.vtri = _widened(self.vtri, cap, -1)
+        self.vtype = _widened(self.vtype, cap, 0)
+        if self.parent.shape[0]:
+            self.parent = _widened(self.parent, cap, -1.0)
+        self.vslot = _widened(self.vslot, cap, -1)
+
+    def grow_triangles(self, room: int, *, exact: bool = False) -> None:
+        """Make room for at least ``room`` more triangles than the free
+        slots hold (doubling unless ``exact``), in every per-triangle table."""
+        if self.spare() >= room:
+            return
+        old = self.stamp.shape[0]
+        want = old + int(room) - self.spare()
+        cap = want if exact else max(2 * old, want)
+        self.corner = _widened(self.corner, 3 * cap, GHOST)
+        self.twin = _widened(self.twin, 3 * cap, NO_EDGE)
+        self.seg = _widened(self.seg, 3 * cap, NO_SEG)
+        self.stamp = _widened(self.stamp, cap, 0)
+        self.free = _widened(self.free, cap, 0)
+        if self.area_bound.shape[0]:
+            self.area_bound = _widened(self.area_bound, cap, -1.0)
+        if self.attribute.shape[0]:
+            self.attribute = _widened(self.attribute, cap, 0.0)
+        self.tflag = _widened(self.tflag, cap, 0)
+
+    def spare(self) -> int:
+        """Triangles that can still be allocated without growing."""
+        return self.nfree + self.stamp.shape[0] - self.nslot
+
+    def add_area_bounds(self, bounds) -> None:
+        """Start the per-triangle area bounds with ``bounds`` (one per slot in use)."""
+        self.area_bound = _widened(np.asarray(bounds, dtype=np.float64), self.stamp.shape[0], -1.0)
+
+    def add_attributes(self, values) -> None:
+        """Start the per-triangle attributes with ``values`` (one per slot in use)."""
+        self.attribute = _widened(np.asarray(values, dtype=np.float64), self.stamp.shape[0], 0.0)
+
+    # ------------------------------------------------------------ read-out
+
+    def live_triangles(self, ghosts: bool = False) -> np.ndarray:
+        """Slots of live triangles in slot order (ghosts excluded unless asked)."""
+        n = self.nslot
+        live = np.asarray(self.stamp)[:n] > 0
+        if not ghosts:
+            c = np.asarray(self.corner)[: 3 * n].reshape(-1, 3)
+            live &= (c >= 0).all(axis=1)
+        return np.flatnonzero(live).astype(np.int64)
+
+    def arrays(self) -> dict:
+        """The tables as numpy arrays (views, not copies), by name."""
+        names = (
+            "xy", "vmark", "vtri", "vtype", "parent", "vslot", "corner", "twin", "seg",
+            "stamp", "free", "area_bound", "attribute", "tflag", "work",
+        )  # fmt: skip
+        return {name: np.asarray(getattr(self, name)) for name in names}
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def remove_ghosts(m: Mesh) -> Index:
+    """Delete every ghost triangle, leaving NO_EDGE across the hull.  Returns the hull size."""
+    hull: Index = 0
+    tw: Index
+    for t in range(m.nslot):
+        if m.stamp[t] <= 0:
+            continue
+        for k in range(3):
+            if m.corner[3 * t + k] == GHOST:
+                tw = m.twin[3 * t + k]
+                if tw != NO_EDGE:
+                    m.twin[tw] = NO_EDGE
+                    hull += 1
+                kill_triangle(m, t)
+                break
+    return hull
+
+
+# ---------------------------------------------------------------- pure Python
+# The primitives of mesh.pxd, for the pure-Python mode (compiled, mesh.pxd's
+# inline definitions are used instead).
+
+if not cython.compiled:
+
+    def lnext(e):
+        """The next edge counter-clockwise in the same triangle."""
+        return e - 2 if e % 3 == 2 else e + 1
+
+    def lprev(e):
+        """The previous edge counter-clockwise in the same triangle."""
+        return e + 2 if e % 3 == 0 else e - 1
+
+    def org(m, e):
+        return m.corner[lnext(e)]
+
+    def dest(m, e):
+        return m.corner[lprev(e)]
+
+    def apex(m, e):
+        return m.corner[e]
+
+    def is_ghost(m, t):
+        return m.corner[3 * t] == GHOST or m.corner[3 * t + 1] == GHOST or m.corner[3 * t + 2] == GHOST
+
+    def alive(m, t):
+        return m.stamp[t] > 0
+
+    def bond(m, e1, e2):
+        """Make edges ``e1`` and ``e2`` (either may be NO_EDGE) each other's twin."""
+        if e1 >= 0:
+            m.twin[e1] = e2
+        if e2 >= 0:
+            m.twin[e2] = e1
+
+    def new_triangle(m, a, b, c):
+        """Allocate a triangle with corners ``(a, b, c)``; return its slot or -1 if full."""
+        t = -1
+        if m.nfree > 0:
+            m.nfree -= 1
+            t = int(m.free[m.nfree])
+            m.stamp[t] = -m.stamp[t] + 1
+        elif m.nslot < m.stamp.shape[0]:
+            t = m.nslot
+            m.nslot = t + 1
+            m.stamp[t] = 1
+        if t >= 0:
+            m.nlive += 1
+            e = 3 * t
+            m.corner[e] = a
+            m.corner[e + 1] = b
+            m.corner[e + 2] = c
+            for k in range(3):
+                m.twin[e + k] = NO_EDGE
+                m.seg[e + k] = NO_SEG
+        return t
+
+    def kill_triangle(m, t):
+        """Free slot ``t``; queue entries that remember its stamp become stale."""
+        m.stamp[t] = -m.stamp[t]
+        m.free[m.nfree] = t
+        m.nfree += 1
+        m.nlive -= 1
+
+    def spare_triangles(m):
+        """How many triangles can still be allocated without growing."""
+        return m.nfree + m.stamp.shape[0] - m.nslot
+
+    def next_random(m):
+        """Advance the walks' generator and return 0, 1 or 2."""
+        m.rng = (m.rng * 1103515245 + 12345) & 0x7FFFFFFF
+        return (m.rng >> 16) % 3

@@ -1,0 +1,133 @@
+"""Delaunay triangulation of a point set: the pipeline's first stage.
+
+Two methods:
+
+* divide and conquer (``divconq``), the default, as in Triangle: with its
+  tie rules the triangulation of cocircular points is the one Triangle
+  makes; cuts alternate between vertical and horizontal unless
+  ``vertical`` (``-l``);
+* randomized incremental insertion (``incremental``, ``-i``).
+
+Ghost triangles keep the outside of the hull symbolic while the mesh is
+built; they are removed at the end, leaving ``NO_EDGE`` across the convex
+hull.  Exact duplicates are never inserted: ``duplicate_of[i]`` names the
+surviving copy (the lowest input index), as Triangle keeps duplicates in
+the output numbering but out of the mesh.
+
+Both kernels see the points renumbered (in cut order, or insertion order),
+which keeps the points of each group together in memory; the vertex ids
+are mapped back at the end.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..core.mesh import Mesh, remove_ghosts
+from ..counters import C_DUPLICATE
+from . import divconq, incremental
+
+METHODS = ("divconq", "vertical", "incremental")
+
+
+def delaunay(
+    xy: np.ndarray,
+    work: np.ndarray,
+    *,
+    method: str = "divconq",
+    seed: int = 0,
+    extra_vertices: int = 0,
+    extra_triangles: int = 0,
+    **tables,
+) -> tuple[Mesh, np.ndarray]:
+    """Delaunay triangulation of the rows of ``xy`` (finite float64 coordinates).
+
+    Returns the mesh (ghosts removed; no triangles if the points are all
+    collinear) and ``duplicate_of``: -1, or the index of the copy of that
+    point which is in the mesh (the lowest index of the copies).
+    ``method`` is one of ``METHODS``; ``seed`` drives the incremental
+    method's insertion order.  ``extra_vertices`` and ``extra_triangles``
+    reserve room for later stages; ``tables`` are ``Mesh``'s optional
+    tables (``parents``, ``area_bounds``, ``attributes``).
+    """
+    if method not in METHODS:
+        raise ValueError(f"unknown Delaunay method {method!r}")
+    if method == "incremental":
+        return _incremental(xy, work, seed, extra_vertices, extra_triangles, tables)
+    n = xy.shape[0]
+    order = np.argsort(xy[:, 0], kind="stable")
+    xs = xy[order, 0]
+    if np.any(xs[1:] == xs[:-1]):  # ties in x: sort by (x, y); stable, so equal points keep index order
+        order = np.lexsort((xy[:, 1], xy[:, 0]))
+    dup = np.full(n, -1, dtype=np.int64)
+    if n > 1:
+        s = xy[order]
+        new = np.empty(n, dtype=bool)
+        new[0] = True
+        np.any(s[1:] != s[:-1], axis=1, out=new[1:])
+        if not new.all():
+            keeper = order[np.maximum.accumulate(np.where(new, np.arange(n), 0))]
+            dup[order[~new]] = keeper[~new]
+            work[C_DUPLICATE] += int(n - new.sum())
+            order = order[new]
+    ids = order.astype(np.int64)
+    pts = divconq.cut_order(xy, ids, method == "divconq")
+    m = Mesh(pts, 2 * n + 8 + extra_triangles, vertices=n + extra_vertices, work=work, **tables)
+    del pts
+    divconq.triangulate_sorted(m, ids.size, method == "divconq")
+    remove_ghosts(m)
+    _restore_numbering(m, xy, ids)
+    return m, dup
+
+
+def _restore_numbering(m: Mesh, xy: np.ndarray, ids: np.ndarray) -> None:
+    """Corner ``i`` of the kernel's numbering is input vertex ``ids[i]``; put
+    the input's own numbering and coordinates back."""
+    n = xy.shape[0]
+    used = np.asarray(m.corner)[: 3 * m.nslot]
+    live = used >= 0
+    used[live] = ids[used[live]]
+    np.asarray(m.xy)[:n] = xy
+    m.nvert = n
+
+
+def _incremental(xy, work, seed, extra_vertices, extra_triangles, tables) -> tuple[Mesh, np.ndarray]:
+    """The randomized incremental method (see incremental.py)."""
+    n = xy.shape[0]
+    order = incremental.insertion_order(xy, np.arange(n), seed)  # first: its temporaries die before the mesh exists
+    m = Mesh(xy[order], 2 * n + 8 + extra_triangles, vertices=n + extra_vertices, work=work, **tables)
+    dup = np.full(n, -1, dtype=np.int64)
+    found = incremental.triangulate(m, seed)
+    if found is not None:  # else all collinear (or fewer than 3 distinct points): no triangles, no error
+        remove_ghosts(m)
+        _restore_numbering(m, xy, order)
+        copies = np.flatnonzero(found >= 0)
+        dup[order[copies]] = order[found[copies]]
+    else:
+        np.asarray(m.xy)[:n] = xy
+    m.rng = 12345  # the later stages' walks start their own sequence, as before this stage had one
+    _keep_lowest_copy(m, dup)
+    return m, dup
+
+
+def _keep_lowest_copy(m: Mesh, dup: np.ndarray) -> None:
+    """Make the lowest input index of each set of equal points the one in the
+    mesh (the walk keeps whichever copy came first in insertion order)."""
+    copies = np.flatnonzero(dup >= 0)
+    if copies.size == 0:
+        return
+    best = np.arange(dup.size)
+    np.minimum.at(best, dup[copies], copies)
+    kept = dup[copies]
+    moved = kept[best[kept] != kept]
+    if moved.size == 0:
+        return
+    label = np.arange(dup.size)
+    label[moved] = best[moved]
+    corner = np.asarray(m.corner)[: 3 * m.nslot]
+    live = corner >= 0
+    corner[live] = label[corner[live]]
+    group = np.concatenate([copies, np.unique(moved)])
+    root = np.where(dup[group] >= 0, dup[group], group)
+    dup[group] = best[root]
+    dup[best[root]] = -1
