@@ -17,6 +17,7 @@ without a word.
 
 from __future__ import annotations
 
+import importlib
 import importlib.abc
 import importlib.machinery
 import importlib.util
@@ -48,10 +49,53 @@ class _SourceFinder(importlib.abc.MetaPathFinder):
         return None  # a subpackage: the ordinary finders handle its __init__.py
 
 
+class _CimportAliases(importlib.abc.MetaPathFinder, importlib.abc.Loader):
+    """Makes ``from cython.cimports.instrument.x import f`` (a cimport,
+    compiled) a plain import of ``instrument.x`` in Python.  Cython's own
+    stand-in module does this only for ``libc``, not for packages."""
+
+    PREFIX = "cython.cimports."
+
+    def find_spec(self, name, path=None, target=None):
+        if name.startswith(self.PREFIX + PACKAGE) and name != self.PREFIX + "libc":
+            return importlib.machinery.ModuleSpec(name, self, is_package=True)
+        return None
+
+    def create_module(self, spec):
+        return importlib.import_module(spec.name[len(self.PREFIX):])
+
+    def exec_module(self, module):
+        pass
+
+
 def enable() -> None:
     """Load every ``instrument`` submodule imported from now on from source."""
     if not any(isinstance(f, _SourceFinder) for f in sys.meta_path):
         sys.meta_path.insert(0, _SourceFinder())
+    _alias_cimports()
+
+
+def _alias_cimports() -> None:
+    import cython  # noqa: F401  (installs cython.cimports, which the aliases extend)
+
+    stand_in = sys.modules.get("cython.cimports")
+    if stand_in is not None and "__spec__" not in vars(stand_in):
+        stand_in.__spec__ = None  # the import system reads a parent's __spec__
+    if not any(isinstance(f, _CimportAliases) for f in sys.meta_path):
+        sys.meta_path.insert(0, _CimportAliases())
+
+
+def load_source(name: str):
+    """A fresh module object for ``name`` run from its ``.py`` file, whatever
+    the mode (for tests of a kernel module's internals, which compiled code
+    does not expose).  Only for modules that import no other kernel module."""
+    _alias_cimports()
+    spec = importlib.util.find_spec(name)
+    path = Path(spec.origin).with_suffix("").with_suffix(".py")
+    loader = importlib.machinery.SourceFileLoader(f"{name}.__source__", str(path))
+    module = importlib.util.module_from_spec(importlib.util.spec_from_loader(loader.name, loader))
+    loader.exec_module(module)
+    return module
 
 
 def is_compiled(module) -> bool:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 import math
 import os
 import subprocess
@@ -202,19 +203,28 @@ def test_counters_are_counted(opts):
     )
 
 
-def test_kernels_run_without_the_jit(tmp_path):
+@pytest.mark.parametrize("opts", ["en", "ien", "len"])
+def test_kernels_run_as_python(opts):
+    """RUPPERT_PURE_PYTHON=1 runs the kernels from source: the same mesh."""
     code = (
-        "import numpy as np, instrument\n"
+        "import json, sys, numpy as np, instrument\n"
         "from instrument.check import check_mesh\n"
+        "from instrument import purepython\n"
+        "from instrument.core import mesh\n"
         "p = np.random.default_rng(0).random((60, 2))\n"
         "p = np.vstack([p, p[:5], [[x, y] for x in range(4) for y in range(4)]])\n"
-        "r = instrument.triangulate({'vertices': p}, 'en')\n"
+        f"r = instrument.triangulate({{'vertices': p}}, {opts!r})\n"
         "assert check_mesh(r) == [], check_mesh(r)\n"
-        "print(len(r['triangles']))\n"
+        "assert not purepython.is_compiled(mesh)\n"
+        "print(json.dumps({k: np.asarray(v).tolist() for k, v in r.items()}))\n"
     )
-    env = dict(os.environ, NUMBA_DISABLE_JIT="1")
+    env = dict(os.environ, NUMBA_DISABLE_JIT="1", RUPPERT_PURE_PYTHON="1")
     out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, timeout=300)
     assert out.returncode == 0, out.stderr[-2000:]
     p = np.random.default_rng(0).random((60, 2))
     p = np.vstack([p, p[:5], [[x, y] for x in range(4) for y in range(4)]])
-    assert int(out.stdout.strip()) == len(instrument.triangulate({"vertices": p})["triangles"])
+    compiled = instrument.triangulate({"vertices": p}, opts)
+    pure = json.loads(out.stdout)
+    assert sorted(pure) == sorted(compiled)
+    for key, value in compiled.items():
+        np.testing.assert_array_equal(np.asarray(pure[key]), value, err_msg=key)

@@ -1,4 +1,4 @@
-"""Tests of instrument/predicates.py against exact rational arithmetic.
+"""Tests of instrument/core/predicates.py against exact rational arithmetic.
 
 The oracle is `fractions.Fraction`: every double is a dyadic rational, so the
 determinants below are computed exactly.
@@ -19,10 +19,13 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from instrument import predicates as P
-from instrument.predicates import incircle, incircle_fast, orient2d, orient2d_fast
+from instrument import purepython
+from instrument.core import predicates as P
+from instrument.core.predicates import incircle, incircle_fast, orient2d, orient2d_fast
 
-MODULE_PATH = pathlib.Path(P.__file__)
+MODULE_PATH = pathlib.Path(P.__file__).with_suffix("").with_suffix(".py")
+#: the module run as Python, whose internals (the exact stages) tests can call
+SOURCE = purepython.load_source("instrument.core.predicates")
 
 
 # ---------------------------------------------------------------------------
@@ -114,6 +117,7 @@ def test_sign_convention():
 
 def test_no_fastmath_in_module():
     assert "fastmath" not in MODULE_PATH.read_text()
+    assert "-ffp-contract=off" in (MODULE_PATH.parents[3] / "setup.py").read_text()
 
 
 def test_fast_twins_and_common_path_return_triangles_det():
@@ -340,22 +344,23 @@ def test_stage_d_expansions_are_exact():
         # orient2d: differences against c
         (acx, acy, bcx, bcy), (acxt, acyt, bcxt, bcyt) = _heads_tails(
             c[0:4], (c[4], c[5], c[4], c[5]))
-        b1, b0 = P._two_product(acx, bcy)
-        r1, r0 = P._two_product(acy, bcx)
-        b = P._two_two_diff(b1, b0, r1, r0)
+        b1, b0 = SOURCE._two_product(acx, bcy)
+        r1, r0 = SOURCE._two_product(acy, bcx)
         w = np.zeros(44)
-        n = P._orient2d_expansion_d(acx, acy, bcx, bcy, acxt, acyt, bcxt, bcyt, *b, w)
+        SOURCE._store_two_two_diff(b1, b0, r1, r0, w, 0)
+        n = SOURCE._orient2d_expansion_d(acx, acy, bcx, bcy, acxt, acyt, bcxt, bcyt, w)
         _assert_expansion(w[28:28 + n], exact_orient(*c[:6]))
         # incircle: differences against d
         coords = (c[0], c[2], c[4], c[1], c[3], c[5])
         ref = (c[6], c[6], c[6], c[7], c[7], c[7])
         heads, tails = _heads_tails(coords, ref)
         wb = np.zeros(316)
-        nb = P._incircle_expansion_b(*heads, wb)
-        fin, m = P._incircle_expansion_d(
-            *heads, *tails, wb, nb, np.empty(1152), np.empty(1152), np.empty(256),
-            np.empty((3, 4)), np.empty((6, 8)), np.empty(6, dtype=np.int64), np.empty(20))
-        _assert_expansion(fin[:m], exact_incircle(*c))
+        nb = SOURCE._incircle_expansion_b(*heads, wb)
+        fin = np.empty(2304)
+        base, m = SOURCE._incircle_expansion_d(
+            *heads, *tails, wb, nb, fin, np.empty(256), np.empty(12), np.empty(48),
+            np.empty(6, dtype=np.int64), np.empty(20))
+        _assert_expansion(fin[base:base + m], exact_incircle(*c))
 
 
 def test_adaptive_stages_match_oracle_when_forced():
@@ -364,9 +369,9 @@ def test_adaptive_stages_match_oracle_when_forced():
     rng = np.random.default_rng(9)
     extra = [tuple(float(v) for v in rng.uniform(-1, 1, 8)) for _ in range(50)]
     for c in ocases + [e[:6] for e in extra]:
-        assert sign(P._orient2d_adapt(*c, math.inf)) == sign(exact_orient(*c))
+        assert sign(SOURCE._orient2d_adapt(*c, math.inf)) == sign(exact_orient(*c))
     for c in icases + extra:
-        assert sign(P._incircle_adapt(*c, math.inf)) == sign(exact_incircle(*c))
+        assert sign(SOURCE._incircle_adapt(*c, math.inf)) == sign(exact_incircle(*c))
 
 
 # ---------------------------------------------------------------------------
@@ -407,60 +412,44 @@ def test_hypothesis_near_cocircular(x0, y0, r, angles, ux, uy, k):
 
 
 # ---------------------------------------------------------------------------
-# Pure Python (NUMBA_DISABLE_JIT=1) gives the same values as the compiled code
+# Pure Python (RUPPERT_PURE_PYTHON=1) gives the same values as the compiled code,
+# whose fast paths come from predicates.pxd (inlined into every kernel)
 # ---------------------------------------------------------------------------
-_NOJIT_SCRIPT = r"""
+_PURE_SCRIPT = r"""
 import json, sys
-sys.path.insert(0, sys.argv[1])
-from instrument import predicates as mod
+from instrument import purepython
+from instrument.core import predicates as mod
 cases = json.loads(sys.stdin.read())
 out = {"orient": [mod.orient2d(*c[:6]).hex() for c in cases],
        "incircle": [mod.incircle(*c).hex() for c in cases],
-       "jit_disabled": not hasattr(mod.orient2d, "py_func")}
+       "orient_fast": [mod.orient2d_fast(*c[:6]).hex() for c in cases],
+       "incircle_fast": [mod.incircle_fast(*c).hex() for c in cases],
+       "compiled": purepython.is_compiled(mod)}
 print(json.dumps(out))
 """
 
 
-def test_same_results_without_jit():
+def test_same_results_in_pure_python():
     ocases, icases = _near_degenerate_cases()
-    cases = [c + (0.25, -0.5) for c in ocases[:10]] + icases[:10]
+    rng = np.random.default_rng(2)
+    cases = [c + (0.25, -0.5) for c in ocases[:20]] + icases[:20]
+    cases += [tuple(map(float, r)) for r in rng.uniform(-1, 1, (40, 8))]  # the fast paths
+    cases += [tuple(map(float, r)) for r in rng.integers(-3, 4, (40, 8))]  # exact zeros
     cases += [
         (0.0, 0.0, 5e-324, 0.0, 0.0, 5e-324, 1e-323, 1e-323),  # rescaled path
         (0.0, 0.0, 2.0**600, 2.0**-600, 2.0**601, 2.0**-599, 1.0, 1.0),  # rational path
         (5.0, 0.0, 0.0, 5.0, -3.0, -4.0, 3.0, nudge(4.0, 1)),
     ]
-    env = dict(os.environ, NUMBA_DISABLE_JIT="1")
+    env = dict(os.environ, RUPPERT_PURE_PYTHON="1")
     proc = subprocess.run(
-        [sys.executable, "-c", _NOJIT_SCRIPT, str(MODULE_PATH.parents[1])],
-        input=json.dumps(cases), capture_output=True, text=True, env=env, timeout=120,
+        [sys.executable, "-c", _PURE_SCRIPT], input=json.dumps(cases), capture_output=True, text=True, env=env, timeout=120
     )
     assert proc.returncode == 0, proc.stderr
     out = json.loads(proc.stdout)
-    assert out["jit_disabled"]
+    assert not out["compiled"] and purepython.is_compiled(P)
     assert out["orient"] == [orient2d(*c[:6]).hex() for c in cases]
     assert out["incircle"] == [incircle(*c).hex() for c in cases]
+    assert out["orient_fast"] == [orient2d_fast(*c[:6]).hex() for c in cases]
+    assert out["incircle_fast"] == [incircle_fast(*c).hex() for c in cases]
     for c, h in zip(cases, out["incircle"]):
         assert sign(float.fromhex(h)) == sign(exact_incircle(*c))
-
-
-def test_predicates_run_inside_kernels_without_reference_counting():
-    """The engine's kernels are compiled with _nrt=False; every stage of the
-    predicates (including the exact expansions) must work there."""
-    from instrument.jit import kernel
-
-    @kernel
-    def signs(pts, out):
-        for i in range(pts.shape[0]):
-            p = pts[i]
-            out[i, 0] = orient2d(p[0], p[1], p[2], p[3], p[4], p[5])
-            out[i, 1] = incircle(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7])
-
-    rng = np.random.default_rng(11)
-    base = rng.integers(-3, 4, size=(400, 8)).astype(float)  # many exact degeneracies
-    tiny = base + rng.integers(-2, 3, size=base.shape) * 2.0**-50  # forces stages B-D
-    pts = np.vstack([base, tiny, np.ldexp(tiny, 600), np.ldexp(tiny, -600)])
-    out = np.zeros((pts.shape[0], 2))
-    signs(pts, out)
-    for p, (o, c) in zip(pts, out):
-        assert sign(o) == sign(exact_orient(*p[:6]))
-        assert sign(c) == sign(exact_incircle(*p))
