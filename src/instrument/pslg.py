@@ -11,7 +11,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from . import cdt
-from .carve import infect_hull, locate_points, plague, spread_regions
+from .carve_numba import infect_hull, locate_points, plague, spread_regions
 from .counters import C_STEINER
 from .delaunay import delaunay
 from .mesh import S_NVERT, Mesh, grow_triangles, grow_vertices, spare_triangles

@@ -124,3 +124,4 @@ cdef inline Index next_random(Mesh m) noexcept nogil:
 
 
 cpdef Index remove_ghosts(Mesh m) noexcept nogil
+cpdef void set_parent(Mesh m, Index v, Index p0, Index p1, Index p2, double s, double t) noexcept nogil

@@ -213,6 +213,21 @@ def remove_ghosts(m: Mesh) -> Index:
     return hull
 
 
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def set_parent(m: Mesh, v: Index, p0: Index, p1: Index, p2: Index, s: cython.double, t: cython.double) -> cython.void:
+    """Record that new vertex ``v``'s attributes are a0 + s (a1 - a0) + t (a2 - a0)
+    of vertices p0, p1, p2 (the output stage interpolates them); nothing
+    when the run has no vertex attributes (the table has no rows)."""
+    if v < m.parent.shape[0]:
+        m.parent[v, 0] = p0
+        m.parent[v, 1] = p1
+        m.parent[v, 2] = p2
+        m.parent[v, 3] = s
+        m.parent[v, 4] = t
+
+
 # ---------------------------------------------------------------- pure Python
 # The primitives of mesh.pxd, for the pure-Python mode (compiled, mesh.pxd's
 # inline definitions are used instead).

@@ -1,4 +1,6 @@
-"""Holes, concavities and regions (Triangle's ``carveholes``, ``-p`` without ``-r``).
+# cython: language_level=3
+"""Holes, concavities and regions (Triangle's ``carveholes``, ``-p`` without
+``-r``): the kernels.
 
 Triangles are "infected" from the convex hull (unless ``-c``) and from each
 hole point, and the infection spreads across every edge that is not a
@@ -6,34 +8,49 @@ subsegment.  Infected triangles are deleted; a subsegment that ends up with
 live triangles on one side only becomes a boundary (marker 0 -> 1, and its
 endpoints likewise).  Regions are then flood-filled the same way, each in
 input order, so later regions overwrite earlier ones.
+
+``Mesh.tflag`` marks the infected triangles while a carve runs (and is
+cleared after).
 """
 
 from __future__ import annotations
 
-from .counters import C_DELETED
-from .jit import kernel
-from .locate import LOC_INSIDE, LOC_ON_EDGE, LOC_ON_VERTEX, walk
-from .mesh import NO_EDGE, NO_SEG, S_NSLOT, kill_triangle, lnext, lprev
+import cython
+from cython.cimports.instrument.core.locate import LOC_INSIDE, LOC_ON_EDGE, LOC_ON_VERTEX, walk
+from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, Index, Mesh, kill_triangle, lnext, lprev
+from cython.cimports.instrument.core.subsegments import Subsegments
+from cython.cimports.instrument.counters import C_DELETED
 
 
-@kernel
-def _boundary_marks(m, segs, vmark, e, endpoints_always):
-    r = m.seg[e]
-    was_zero = segs.marker[r] == 0
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _boundary_marks(m: Mesh, segs: Subsegments, e: Index, endpoints_always: cython.bint) -> cython.void:
+    r: Index = m.seg[e]
+    was_zero: cython.bint = segs.marker[r] == 0
     if was_zero:
         segs.marker[r] = 1
+    v: Index
     if was_zero or endpoints_always:
-        for v in (m.corner[lnext(e)], m.corner[lprev(e)]):
-            if vmark[v] == 0:
-                vmark[v] = 1
+        v = m.corner[lnext(e)]
+        if m.vmark[v] == 0:
+            m.vmark[v] = 1
+        v = m.corner[lprev(e)]
+        if m.vmark[v] == 0:
+            m.vmark[v] = 1
 
 
-@kernel
-def _first_hull_edge(m):
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _first_hull_edge(m: Mesh) -> Index:
     """The hull edge leaving the hull vertex with the least (x, y), or NO_EDGE."""
     xy = m.xy
-    best = NO_EDGE
-    for t in range(m.size[S_NSLOT]):
+    best: Index = NO_EDGE
+    e: Index
+    o: Index
+    b: Index
+    for t in range(m.nslot):
         if m.stamp[t] <= 0:
             continue
         for k in range(3):
@@ -49,8 +66,10 @@ def _first_hull_edge(m):
     return best
 
 
-@kernel
-def infect_hull(m, segs, vmark, infected, queue):
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def infect_hull(m: Mesh, segs: Subsegments, queue: cython.longlong[::1]) -> Index:
     """Walk the convex hull counter-clockwise from the edge leaving its
     lowest vertex (least x, then y), as Triangle does: a triangle on a hull
     edge that is not a subsegment is infected and appended to ``queue``; a
@@ -58,18 +77,20 @@ def infect_hull(m, segs, vmark, infected, queue):
     triangle was not infected earlier in the walk (through another of its
     hull edges), so the walk's order decides some endpoints' markers.
     Returns the queue length."""
-    n = 0
-    e0 = _first_hull_edge(m)
-    e = e0
+    n: Index = 0
+    e0: Index = _first_hull_edge(m)
+    e: Index = e0
+    t: Index
+    f: Index
     while e != NO_EDGE:
         t = e // 3
-        if not infected[t]:
+        if not m.tflag[t]:
             if m.seg[e] == NO_SEG:
-                infected[t] = 1
+                m.tflag[t] = 1
                 queue[n] = t
                 n += 1
             else:
-                _boundary_marks(m, segs, vmark, e, False)
+                _boundary_marks(m, segs, e, False)
         # the next hull edge leaves this one's destination
         f = lnext(e)
         while m.twin[f] != NO_EDGE:
@@ -78,68 +99,94 @@ def infect_hull(m, segs, vmark, infected, queue):
     return n
 
 
-@kernel
-def locate_points(m, work, pts, lo, hi, found, state):
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def locate_points(
+    m: Mesh, pts: cython.double[:, ::1], lo: cython.double[::1], hi: cython.double[::1], found: cython.longlong[:, ::1]
+) -> cython.void:
     """For each point inside the box ``lo..hi``: the triangle holding it
     (``found[i, 0]``) and that triangle's stamp (``found[i, 1]``); -1 if it is
     outside the box or the mesh."""
-    t0 = m.size[S_NSLOT] - 1
+    t0: Index = m.nslot - 1
     while t0 >= 0 and m.stamp[t0] <= 0:
         t0 -= 1
+    x: cython.double
+    y: cython.double
+    status: cython.int
+    e: Index
     for i in range(pts.shape[0]):
         found[i, 0] = -1
         found[i, 1] = 0
-        x, y = pts[i, 0], pts[i, 1]
+        x = pts[i, 0]
+        y = pts[i, 1]
         if t0 < 0 or not (lo[0] <= x <= hi[0] and lo[1] <= y <= hi[1]):
             continue
-        status, e = walk(m, work, t0, x, y, state, 4 * m.stamp.shape[0] + 64)
+        status, e = walk(m, t0, x, y, 4 * m.stamp.shape[0] + 64)
         if status == LOC_INSIDE or status == LOC_ON_EDGE or status == LOC_ON_VERTEX:
             found[i, 0] = e // 3
             found[i, 1] = m.stamp[e // 3]
 
 
-@kernel
-def plague(m, work, segs, vmark, infected, queue, n):
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def plague(m: Mesh, segs: Subsegments, queue: cython.longlong[::1], n: Index) -> Index:
     """Spread the infection from ``queue[:n]`` across non-subsegment edges and
-    delete the infected triangles.  Returns how many were deleted.
+    delete the infected triangles (clearing their flags).  Returns how many
+    were deleted.
 
     As in Triangle, a subsegment is made a boundary (marker 0 -> 1, endpoints
     0 -> 1) when the infection reaches it while the other side is still
     healthy, even if that side is infected later; so the endpoints of
     segments inside holes get marker 1 too.
     """
-    head = 0
+    head: Index = 0
+    t: Index
+    e: Index
+    tw: Index
     while head < n:
         t = queue[head]
         head += 1
         for k in range(3):
             e = 3 * t + k
             tw = m.twin[e]
-            if tw == NO_EDGE or infected[tw // 3]:
+            if tw == NO_EDGE or m.tflag[tw // 3]:
                 continue
             if m.seg[e] != NO_SEG:
-                _boundary_marks(m, segs, vmark, e, True)
+                _boundary_marks(m, segs, e, True)
             else:
-                infected[tw // 3] = 1
+                m.tflag[tw // 3] = 1
                 queue[n] = tw // 3
                 n += 1
-    killed = 0
     for i in range(n):
         t = queue[i]
         for k in range(3):
             tw = m.twin[3 * t + k]
-            if tw != NO_EDGE and not infected[tw // 3]:
+            if tw != NO_EDGE and not m.tflag[tw // 3]:
                 m.twin[tw] = NO_EDGE
         kill_triangle(m, t)
-        work[C_DELETED] += 1
-        killed += 1
-    return killed
+        m.work[C_DELETED] += 1
+    for i in range(n):
+        m.tflag[queue[i]] = 0
+    return n
 
 
-@kernel
-def spread_regions(m, found, values, out, seen, stack):
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def spread_regions(
+    m: Mesh, found: cython.longlong[:, ::1], values: cython.double[::1], out: cython.double[::1],
+    seen: cython.longlong[::1], stack: cython.longlong[::1],
+) -> cython.void:
     """Flood-fill each located region (in order) across non-subsegment edges,
     writing ``values[i]`` into ``out[t]`` for its triangles."""
+    t0: Index
+    mark: Index
+    n: Index
+    t: Index
+    e: Index
+    tw: Index
     for i in range(found.shape[0]):
         t0 = found[i, 0]
         if t0 < 0 or m.stamp[t0] != found[i, 1]:

@@ -1,0 +1,48 @@
+"""Carving, the pipeline's third stage (``-p`` without ``-r``): remove the
+concavities (unless ``-c``) and the holes (unless ``-O``), then spread the
+regional attributes (``-A``) and area bounds (a bare ``-a``) over the
+triangles of each region.  The kernels are in infect.py.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..state import MeshState
+from ..switches import Options
+from .infect import infect_hull, locate_points, plague, spread_regions
+
+
+def carve(ms: MeshState, o: Options, holes: np.ndarray | None, regions: np.ndarray | None, xy_in: np.ndarray) -> None:
+    """Remove concavities and holes, then spread regions (see the module docstring)."""
+    m = ms.mesh
+    slots = m.triangle_capacity
+    lo = xy_in.min(axis=0)
+    hi = xy_in.max(axis=0)
+    found_regions = None
+    if regions is not None and len(regions):
+        found_regions = np.zeros((len(regions), 2), dtype=np.int64)
+        locate_points(m, np.ascontiguousarray(regions[:, :2]), lo, hi, found_regions)
+    queue = np.zeros(slots, dtype=np.int64)
+    tflag = np.asarray(m.tflag)
+    n = 0
+    if not o.c:
+        n = infect_hull(m, ms.segs, queue)
+    if holes is not None and len(holes) and not o.O:
+        found = np.zeros((len(holes), 2), dtype=np.int64)
+        locate_points(m, np.ascontiguousarray(holes), lo, hi, found)
+        for t in found[found[:, 0] >= 0, 0]:
+            if not tflag[t]:
+                tflag[t] = 1
+                queue[n] = t
+                n += 1
+    plague(m, ms.segs, queue, n)
+    if found_regions is not None:
+        seen = np.zeros(slots, dtype=np.int64)
+        if o.A:
+            m.add_attributes(np.zeros(m.nslot))
+            spread_regions(m, found_regions, np.ascontiguousarray(regions[:, 2]), m.attribute, seen, queue)
+        if o.var_area:
+            m.add_area_bounds(np.full(m.nslot, -1.0))
+            seen[:] = 0
+            spread_regions(m, found_regions, np.ascontiguousarray(regions[:, 3]), m.area_bound, seen, queue)

@@ -1,0 +1,9 @@
+# Finding edges by their end vertices (navigate.py), for the kernels.
+from instrument.core.mesh cimport Index, Mesh
+
+cpdef Index origin_edge(Mesh m, Index v) noexcept nogil
+cpdef Index vertex_edge(Mesh m, Index v) noexcept nogil
+cpdef void remember_corners(Mesh m, Index t) noexcept nogil
+cpdef Index edge_around(Mesh m, Index e0, Index v) noexcept nogil
+cpdef Index find_edge(Mesh m, Index u, Index v) noexcept nogil
+cpdef void build_vertex_edges(Mesh m) noexcept nogil

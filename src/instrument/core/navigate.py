@@ -1,0 +1,123 @@
+# cython: language_level=3
+"""Finding edges by their end vertices.
+
+Flips and splits change edge numbers, so the later stages remember vertex
+pairs and find the edge again when they need it.  ``Mesh.vtri[v]`` keeps,
+for each vertex, some edge leaving it (a hint refreshed whenever a triangle
+is made around it, see ``remember_corners``); from there ``edge_around``
+turns around the vertex.  A stale hint is replaced by walking to the vertex.
+"""
+
+from __future__ import annotations
+
+import cython
+from cython.cimports.instrument.core.locate import LOC_ON_VERTEX, walk
+from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, Index, Mesh, lnext, lprev
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def origin_edge(m: Mesh, v: Index) -> Index:
+    """The remembered edge whose origin is ``v`` if it is still valid, else -1."""
+    e: Index = m.vtri[v]
+    if e >= 0 and m.stamp[e // 3] > 0 and m.corner[lnext(e)] == v:
+        return e
+    return -1
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def vertex_edge(m: Mesh, v: Index) -> Index:
+    """Some edge whose origin is ``v``: the remembered one, or found by
+    walking to the vertex from the last live triangle; -1 if ``v`` is in no
+    triangle."""
+    e: Index = origin_edge(m, v)
+    if e >= 0:
+        return e
+    t: Index = m.nslot - 1
+    while t >= 0 and m.stamp[t] <= 0:
+        t -= 1
+    status: cython.int
+    status, e = walk(m, t, m.xy[v, 0], m.xy[v, 1], 4 * m.stamp.shape[0] + 64)
+    if status != LOC_ON_VERTEX:
+        return -1
+    m.vtri[v] = e
+    return e
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def remember_corners(m: Mesh, t: Index) -> cython.void:
+    """Record triangle ``t``'s edges as the starting edges of its corners."""
+    for k in range(3):
+        m.vtri[m.corner[3 * t + k]] = 3 * t + (k + 2) % 3
+
+
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _hit(m: Mesh, e: Index, v: Index) -> cython.bint:
+    return m.corner[lprev(e)] == v if v >= 0 else m.seg[e] != NO_SEG
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def edge_around(m: Mesh, e0: Index, v: Index) -> Index:
+    """Rotate about ``org(e0)``: the first edge out of it whose destination is
+    ``v``, or with ``v < 0`` the first subsegment at it (incoming edges are
+    checked too, so a subsegment on the boundary is found).  -1 if none."""
+    e: Index = e0
+    nxt: Index
+    tw: Index
+    for _ in range(m.stamp.shape[0]):  # counter-clockwise
+        if _hit(m, e, v):
+            return e
+        if v < 0 and m.seg[lprev(e)] != NO_SEG:
+            return lprev(e)
+        nxt = m.twin[lprev(e)]
+        if nxt == e0:
+            return -1
+        if nxt == NO_EDGE:
+            break
+        e = nxt
+    e = e0
+    for _ in range(m.stamp.shape[0]):  # clockwise, for a vertex on the boundary
+        tw = m.twin[e]
+        if tw == NO_EDGE:
+            break
+        e = lnext(tw)
+        if e == e0:
+            break
+        if _hit(m, e, v):
+            return e
+    return -1
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def find_edge(m: Mesh, u: Index, v: Index) -> Index:
+    """The edge ``u -> v``, or -1 if the two are not joined."""
+    e0: Index = vertex_edge(m, u)
+    if e0 < 0:
+        return -1
+    return edge_around(m, e0, v)
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def build_vertex_edges(m: Mesh) -> cython.void:
+    """``vtri[v]`` = an edge with origin ``v`` for every vertex in the mesh."""
+    v: Index
+    for t in range(m.nslot):
+        if m.stamp[t] > 0:
+            for k in range(3):
+                v = m.corner[3 * t + k]
+                if v >= 0:
+                    m.vtri[v] = 3 * t + (k + 2) % 3

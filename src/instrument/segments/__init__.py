@@ -1,0 +1,111 @@
+"""Segment recovery, the pipeline's second stage (``-p``, ``-c``): the input
+segments become chains of constrained edges of the triangulation.
+
+The kernels (recover.py) insert one piece at a time and stop when the mesh
+is full; the driver here grows it and lets them go on, and turns a failure
+into an error that names the segment.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..core.navigate import build_vertex_edges
+from ..core.status import DONE, FAILED, NEED_BUFFER
+from ..counters import C_STEINER
+from ..state import MeshState
+from .recover import Recovery, count_inverted, insert_segments, mark_hull
+
+TOO_CLOSE = (
+    "segments cross at points too close together for double precision "
+    "(nearly concurrent or overlapping segments); the constrained triangulation could not be built"
+)
+
+
+def clean_segments(segments: np.ndarray, xy: np.ndarray, dup: np.ndarray, warnings: list[str]) -> np.ndarray:
+    """Input segments as rows (a, b, input index), with Triangle's warnings for
+    invalid endpoints and coincident endpoints; endpoints that are duplicate
+    vertices are mapped to the copy in the mesh."""
+    n = xy.shape[0]
+    seg = np.asarray(segments, dtype=np.int64).reshape(-1, 2)
+    bad_first = (seg[:, 0] < 0) | (seg[:, 0] >= n)
+    bad_second = ~bad_first & ((seg[:, 1] < 0) | (seg[:, 1] >= n))
+    ok = ~(bad_first | bad_second)
+    ends = np.where(ok[:, None], seg, 0)
+    ends = np.where(dup[ends] >= 0, dup[ends], ends)
+    coincident = ok & (xy[ends[:, 0]] == xy[ends[:, 1]]).all(axis=1)
+    for i in np.flatnonzero(~ok | coincident):
+        if bad_first[i]:
+            warnings.append(f"Warning:  Invalid first endpoint of segment {i} in input.")
+        elif bad_second[i]:
+            warnings.append(f"Warning:  Invalid second endpoint of segment {i} in input.")
+        else:
+            warnings.append(f"Warning:  Endpoints of segment {i} are coincident in input.")
+    keep = ok & ~coincident
+    return np.c_[ends[keep], np.flatnonzero(keep)].astype(np.int64)
+
+
+def recover_segments(ms: MeshState, rows: np.ndarray, seg_markers: np.ndarray) -> None:
+    """Insert the segments ``rows`` (from ``clean_segments``) in input order."""
+    m = ms.mesh
+    if rows.shape[0] == 0 or m.nslot == 0:
+        return
+    rows, in_marker = merge_duplicates(rows, np.asarray(seg_markers, dtype=np.int32))
+    build_vertex_edges(m)
+    work = Recovery(rows, in_marker, 4 * (m.nvert + 64))
+    # every pair of segments crosses at most once
+    most_vertices = m.nvert + rows.shape[0] * (rows.shape[0] + 1) // 2
+    while True:
+        status = insert_segments(m, ms.segs, work)
+        if status == DONE:
+            if ms.work[C_STEINER] and count_inverted(m):
+                # rounded intersection points of nearly concurrent segments
+                # can fold the mesh; never hand back a folded mesh
+                raise RuntimeError(TOO_CLOSE)
+            return
+        # a segment cannot cross more triangles than there are
+        lost = status == NEED_BUFFER and work.buf.shape[0] > 8 * (m.triangle_capacity + 64)
+        if status == FAILED or lost or m.nvert > most_vertices:
+            a, b, i = work.current
+            xy = m.xy
+            raise RuntimeError(
+                f"could not recover segment {i} between ({xy[a, 0]:.17g}, {xy[a, 1]:.17g}) and "
+                f"({xy[b, 0]:.17g}, {xy[b, 1]:.17g}): " + TOO_CLOSE
+            )
+        if status == NEED_BUFFER:
+            work.grow_buffer()
+            continue
+        ms.grow(vertices=m.nvert // 2 + 16, triangles=m.triangle_capacity // 2 + 64, records=ms.segs.capacity)
+        work.grow_pieces()
+
+
+def merge_duplicates(rows: np.ndarray, markers: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Drop repeats of a segment (same two endpoints, either direction).
+
+    The first copy is kept and takes the first non-zero marker among its
+    copies, as recovering the copies one after another would do; dropping
+    them up front keeps a copy from crossing its own first copy after a
+    crossing point has bent that (rounded crossing points are not exactly on
+    the line).
+    """
+    key = np.sort(rows[:, :2], axis=1)
+    _, first, inverse = np.unique(key, axis=0, return_index=True, return_inverse=True)
+    inverse = inverse.ravel()
+    if first.shape[0] == rows.shape[0]:
+        return rows, markers
+    markers = markers.copy()
+    group_marker = np.zeros(first.shape[0], dtype=np.int32)
+    for i in range(rows.shape[0] - 1, -1, -1):  # the earliest non-zero wins
+        mk = markers[rows[i, 2]]
+        if mk != 0:
+            group_marker[inverse[i]] = mk
+    keep = np.sort(first)
+    kept = rows[keep]
+    markers[kept[:, 2]] = np.where(markers[kept[:, 2]] == 0, group_marker[inverse[keep]], markers[kept[:, 2]])
+    return kept, markers
+
+
+def enclose_hull(ms: MeshState) -> None:
+    """-c: every hull edge becomes a subsegment with marker 1."""
+    while not mark_hull(ms.mesh, ms.segs, -1):
+        ms.grow(records=ms.segs.capacity)

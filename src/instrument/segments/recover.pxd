@@ -1,0 +1,17 @@
+# Segment recovery kernels (recover.py).
+from instrument.core.mesh cimport Index, Mesh
+from instrument.core.subsegments cimport Subsegments
+
+cdef class Recovery:
+    cdef public long long[:, ::1] pieces   # stack of (a, b, input segment); the top is next
+    cdef public Index top                  # pieces on the stack
+    cdef public int[::1] markers           # the input segments' markers
+    cdef public long long[::1] buf         # scratch: crossed edges, flip stack
+    cdef public Index handled              # pieces handled so far
+    cdef public Index inputs               # input segments
+
+cpdef void mark_subsegment(Mesh m, Subsegments segs, Index e, int marker, int source) noexcept nogil
+cpdef bint restore_delaunay(Mesh m, long long[::1] stack) noexcept nogil
+cpdef int insert_segments(Mesh m, Subsegments segs, Recovery work) noexcept nogil
+cpdef bint mark_hull(Mesh m, Subsegments segs, int source) noexcept nogil
+cpdef Index count_inverted(Mesh m) noexcept nogil

@@ -1,0 +1,605 @@
+# cython: language_level=3
+"""Segment recovery kernels: from a Delaunay triangulation to a constrained one.
+
+Segments are inserted in input order from a work stack of pieces ``(a, b,
+segment)`` kept in a ``Recovery``, so the kernel can stop when the mesh is
+full and resume after the driver grows it.  One piece is recovered as
+follows.
+
+1. Turn around ``a`` to the triangle the ray ``a -> b`` enters.  If the edge
+   ``a b`` exists, mark it.  If a vertex ``v`` lies exactly on the ray
+   (exact orientation), mark ``a v`` and continue with ``v -> b``.
+2. Otherwise walk along the segment through the triangles it crosses,
+   collecting the crossed edges.  The walk stops at ``b``, at a vertex
+   exactly on the segment (the rest becomes a new piece), or at a
+   subsegment it would cross.
+3. Crossing a subsegment: the two segments intersect.  The intersection point
+   (computed along the crossed subsegment) becomes a new vertex that splits
+   it; the piece is replaced by ``a -> p`` and ``p -> b``.
+4. Otherwise flip the crossed edges away (Sloan's algorithm: flip any
+   crossed edge whose quadrilateral is strictly convex, until none crosses;
+   one always is), mark the segment, and restore the constrained Delaunay
+   property by Lawson flips of the new edges.  Flipping, unlike deleting the
+   crossed triangles and re-filling the two sides, needs no assumption about
+   the shape of the crossed region (it can wrap around a vertex whose whole
+   star it crosses).
+
+Every constrained edge piece has its own subsegment record (marker, input
+segment); ``Mesh.seg[e]`` holds the record number on both sides of the edge.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+import cython
+from cython.cimports.instrument.core.insert import flip, lawson, should_flip, split_edge, split_triangle, star_edges
+from cython.cimports.instrument.core.locate import LOC_INSIDE, LOC_ON_EDGE, LOC_ON_VERTEX, walk
+from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, Index, Mesh, lnext, lprev, set_parent, spare_triangles
+from cython.cimports.instrument.core.navigate import find_edge, remember_corners, vertex_edge
+from cython.cimports.instrument.core.predicates import orient2d
+from cython.cimports.instrument.core.status import DONE, FAILED, NEED_BUFFER, NEED_ROOM
+from cython.cimports.instrument.core.subsegments import Subsegments, new_record
+from cython.cimports.instrument.counters import C_ORIENT, C_STEINER
+from cython.cimports.libc.math import fabs, sqrt
+
+# what recovering one piece found (_recover)
+_PIECE_DONE = cython.declare(cython.int, 0)  # the piece is a subsegment now
+_PIECE_CONTINUES = cython.declare(cython.int, 1)  # a vertex on it: go on from there
+_PIECE_CROSSES = cython.declare(cython.int, 2)  # it crosses a subsegment (the caller splits it)
+_PIECE_FAILED = cython.declare(cython.int, 3)
+_PIECE_BUFFER = cython.declare(cython.int, 4)  # the scratch buffer is too small (nothing changed)
+
+
+@cython.cclass
+class Recovery:
+    """The work of ``insert_segments``, kept between its calls: a stack of
+    pieces (a, b, input segment; the top is next), the input segments'
+    markers, a scratch buffer, and a count of pieces handled against a bound
+    (rounded crossing points that re-route each other must not loop for
+    ever)."""
+
+    def __init__(self, rows, markers, buffer: int):
+        rows = np.asarray(rows, dtype=np.int64).reshape(-1, 3)
+        self.pieces = np.zeros((rows.shape[0] + 64, 3), dtype=np.int64)
+        np.asarray(self.pieces)[: rows.shape[0]] = rows[::-1]
+        self.top = rows.shape[0]
+        self.markers = np.ascontiguousarray(markers, dtype=np.int32)
+        self.buf = np.zeros(buffer, dtype=np.int64)
+        self.handled = 0
+        self.inputs = rows.shape[0]
+
+    def grow_pieces(self) -> None:
+        if self.top + 4 > self.pieces.shape[0]:
+            grown = np.zeros((2 * self.pieces.shape[0], 3), dtype=np.int64)
+            grown[: self.pieces.shape[0]] = self.pieces
+            self.pieces = grown
+
+    def grow_buffer(self) -> None:
+        self.buf = np.zeros(2 * self.buf.shape[0], dtype=np.int64)
+
+    @property
+    def current(self) -> tuple[int, int, int]:
+        """The piece on top of the stack: (a, b, input segment)."""
+        p = np.asarray(self.pieces)[self.top - 1]
+        return int(p[0]), int(p[1]), int(p[2])
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def mark_subsegment(m: Mesh, segs: Subsegments, e: Index, marker: cython.int, source: cython.int) -> cython.void:
+    """Make edge ``e`` (both sides) a subsegment of input segment ``source``.
+
+    A new edge gets a new record.  An edge that already is a subsegment (a
+    duplicate segment) keeps its record, taking ``marker`` if its own is 0.
+    Endpoints whose marker is 0 take the subsegment's.
+    """
+    old: Index = m.seg[e]
+    if old == NO_SEG:
+        old = new_record(segs, marker, source, m.corner[lnext(e)], m.corner[lprev(e)])
+        m.seg[e] = cython.cast(cython.int, old)
+        if m.twin[e] != NO_EDGE:
+            m.seg[m.twin[e]] = cython.cast(cython.int, old)
+    elif segs.marker[old] == 0:
+        segs.marker[old] = marker
+    mk: cython.int = segs.marker[old]
+    o: Index = m.corner[lnext(e)]
+    d: Index = m.corner[lprev(e)]
+    if m.vmark[o] == 0:
+        m.vmark[o] = mk
+    if m.vmark[d] == 0:
+        m.vmark[d] = mk
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _side(ax: cython.double, ay: cython.double, bx: cython.double, by: cython.double, px: cython.double, py: cython.double) -> cython.double:
+    """orient2d of p against the line a -> b, but 0 for a point within a few
+    units in the last place of the line: a rounded crossing vertex starts
+    pieces that are off their segment's line by that much, and the input
+    vertices on the segment must still end those pieces."""
+    s: cython.double = orient2d(ax, ay, bx, by, px, py)
+    length: cython.double = sqrt((bx - ax) * (bx - ax) + (by - ay) * (by - ay))
+    tol: cython.double = 2.0**-48 * (fabs(ax) + fabs(ay) + fabs(bx) + fabs(by))
+    return 0.0 if fabs(s) <= tol * length else s
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _turn_to(m: Mesh, a: Index, b: Index, e0: Index) -> tuple[Index, cython.int]:
+    """Turn around ``a`` (from edge ``e0``, origin ``a``) to the edge ``e``
+    (origin ``a``) whose triangle contains the start of the ray ``a -> b``.
+
+    Returns ``(e, where)``: where = 0 if ``b`` is strictly inside the wedge
+    (the ray crosses the edge opposite ``a``), 1 if ``dest(e)`` lies on the
+    ray, 2 if ``apex(e)`` lies on the ray; (-1, -1) if no triangle is found.
+    """
+    xy = m.xy
+    ax: cython.double = xy[a, 0]
+    ay: cython.double = xy[a, 1]
+    bx: cython.double = xy[b, 0]
+    by: cython.double = xy[b, 1]
+    e: Index
+    d: Index
+    x: Index
+    nxt: Index
+    tw: Index
+    od: cython.double
+    ox: cython.double
+    for direction in range(2):  # counter-clockwise, then clockwise from e0
+        e = e0
+        for _ in range(m.stamp.shape[0]):
+            d = m.corner[lprev(e)]
+            x = m.corner[e]
+            m.work[C_ORIENT] += 2
+            od = -_side(ax, ay, bx, by, xy[d, 0], xy[d, 1])
+            ox = -_side(ax, ay, bx, by, xy[x, 0], xy[x, 1])
+            if od == 0.0 and (xy[d, 0] - ax) * (bx - ax) + (xy[d, 1] - ay) * (by - ay) > 0.0:
+                return e, 1
+            if ox == 0.0 and (xy[x, 0] - ax) * (bx - ax) + (xy[x, 1] - ay) * (by - ay) > 0.0:
+                return e, 2
+            if od > 0.0 and ox < 0.0:
+                return e, 0
+            if direction == 0:
+                nxt = m.twin[lprev(e)]
+            else:
+                tw = m.twin[e]
+                nxt = NO_EDGE if tw == NO_EDGE else lnext(tw)
+            if nxt == NO_EDGE or nxt == e0:
+                break
+            e = nxt
+    return -1, -1
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _recover(
+    m: Mesh, segs: Subsegments, a: Index, b: Index, marker: cython.int, source: cython.int, buf: cython.longlong[::1]
+) -> tuple[cython.int, Index, Index]:
+    """Recover one piece ``a -> b`` of input segment ``source``.
+
+    Returns ``(kind, v, e)`` with kind one of the ``_PIECE_*`` values:
+    continue with ``v -> b``, or the walk met subsegment edge ``e``.
+    """
+    xy = m.xy
+    e0: Index = vertex_edge(m, a)
+    if e0 < 0:
+        return _PIECE_FAILED, -1, -1
+    e: Index
+    where: cython.int
+    e, where = _turn_to(m, a, b, e0)
+    if e < 0:
+        return _PIECE_FAILED, -1, -1
+    d: Index
+    x: Index
+    if where == 1:  # dest(e) on the ray
+        d = m.corner[lprev(e)]
+        mark_subsegment(m, segs, e, marker, source)
+        return (_PIECE_DONE if d == b else _PIECE_CONTINUES), d, -1
+    if where == 2:  # apex(e) on the ray: the edge apex -> a is lprev(e)
+        x = m.corner[e]
+        mark_subsegment(m, segs, lprev(e), marker, source)
+        return (_PIECE_DONE if x == b else _PIECE_CONTINUES), x, -1
+    # Walk through the crossed triangles, queueing the crossed edges as
+    # vertex pairs (right, left): flips change edge ids, not vertex pairs.
+    n: Index = buf.shape[0] // 4
+    qr: cython.longlong[::1] = buf[0:n]
+    ql: cython.longlong[::1] = buf[n : 2 * n]
+    stack: cython.longlong[::1] = buf[2 * n :]
+    nq: Index = 0
+    c: Index = lnext(e)  # the crossed edge, right -> left
+    ax: cython.double = xy[a, 0]
+    ay: cython.double = xy[a, 1]
+    bx: cython.double = xy[b, 0]
+    by: cython.double = xy[b, 1]
+    end: Index = -1
+    tw: Index
+    y: Index
+    s: cython.double
+    while end < 0:
+        if m.seg[c] != NO_SEG:
+            return _PIECE_CROSSES, -1, c
+        tw = m.twin[c]
+        if tw == NO_EDGE:
+            return _PIECE_FAILED, -1, -1
+        if nq >= n:
+            return _PIECE_BUFFER, -1, -1
+        qr[nq] = m.corner[lnext(c)]
+        ql[nq] = m.corner[lprev(c)]
+        nq += 1
+        y = m.corner[tw]
+        if y == b:
+            s = 0.0
+        else:
+            m.work[C_ORIENT] += 1
+            s = _side(ax, ay, bx, by, xy[y, 0], xy[y, 1])
+        if s > 0.0:
+            c = lnext(tw)
+        elif s < 0.0:
+            c = lprev(tw)
+        else:  # y is b, or a vertex exactly on the segment
+            end = y
+    if not _flip_out(m, a, end, qr, ql, nq, n, stack):
+        return _PIECE_FAILED, -1, -1
+    e = find_edge(m, a, end)
+    if e < 0:
+        return _PIECE_FAILED, -1, -1
+    mark_subsegment(m, segs, e, marker, source)
+    if not restore_delaunay(m, stack):
+        return _PIECE_FAILED, -1, -1
+    return (_PIECE_DONE if end == b else _PIECE_CONTINUES), end, -1
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _flip_and_remember(m: Mesh, e: Index) -> Index:
+    t1: Index = flip(m, e)
+    remember_corners(m, t1)
+    remember_corners(m, m.twin[3 * t1 + 1] // 3)
+    return t1
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _flip_out(
+    m: Mesh, a: Index, b: Index, qr: cython.longlong[::1], ql: cython.longlong[::1], nq: Index, n: Index,
+    stack: cython.longlong[::1],
+) -> cython.bint:
+    """Flip every queued edge (a circular queue of ``nq`` vertex pairs that
+    cross ``a b``) until none crosses; new edges that do not cross go on
+    ``stack`` (from ``stack[0]`` = count) for the Delaunay pass."""
+    xy = m.xy
+    ax: cython.double = xy[a, 0]
+    ay: cython.double = xy[a, 1]
+    bx: cython.double = xy[b, 0]
+    by: cython.double = xy[b, 1]
+    stack[0] = 0
+    head: Index = 0
+    left: Index = nq
+    tries: Index = 0
+    u: Index
+    v: Index
+    e: Index
+    x: Index
+    y: Index
+    k: Index
+    convex: cython.bint
+    sx: cython.double
+    sy: cython.double
+    while left > 0:
+        tries += 1
+        if tries > 4 * nq * nq + 64:  # Sloan's loop always finds a flip
+            return False
+        u = qr[head]
+        v = ql[head]
+        head = (head + 1) % n
+        left -= 1
+        e = find_edge(m, u, v)
+        if e < 0:
+            return False
+        x = m.corner[e]
+        y = m.corner[m.twin[e]]
+        # the flipped triangles (x, u, y) and (x, y, v) must be counter-clockwise
+        m.work[C_ORIENT] += 2
+        convex = (
+            orient2d(xy[x, 0], xy[x, 1], xy[u, 0], xy[u, 1], xy[y, 0], xy[y, 1]) > 0.0
+            and orient2d(xy[x, 0], xy[x, 1], xy[y, 0], xy[y, 1], xy[v, 0], xy[v, 1]) > 0.0
+        )
+        if not convex:
+            qr[(head + left) % n] = u
+            ql[(head + left) % n] = v
+            left += 1
+            continue
+        _flip_and_remember(m, e)
+        m.work[C_ORIENT] += 2
+        sx = orient2d(ax, ay, bx, by, xy[x, 0], xy[x, 1])
+        sy = orient2d(ax, ay, bx, by, xy[y, 0], xy[y, 1])
+        if x != a and x != b and y != a and y != b and sx * sy < 0.0:
+            # still crosses: queue it again, right end first
+            if sx < 0.0:
+                qr[(head + left) % n] = x
+                ql[(head + left) % n] = y
+            else:
+                qr[(head + left) % n] = y
+                ql[(head + left) % n] = x
+            left += 1
+        else:
+            k = stack[0]
+            if 2 * k + 3 > stack.shape[0]:
+                return False
+            stack[2 * k + 1] = x
+            stack[2 * k + 2] = y
+            stack[0] = k + 1
+    return True
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def restore_delaunay(m: Mesh, stack: cython.longlong[::1]) -> cython.bint:
+    """Lawson's flips over the edges (vertex pairs) on ``stack`` (count in
+    ``stack[0]``, pairs after it) until every unconstrained one is locally
+    Delaunay; each flip queues its quadrilateral's four sides.  False if the
+    stack is too short."""
+    k: Index = stack[0]
+    u: Index
+    v: Index
+    e: Index
+    x: Index
+    y: Index
+    while k > 0:
+        k -= 1
+        u = stack[2 * k + 1]
+        v = stack[2 * k + 2]
+        e = find_edge(m, u, v)
+        if e < 0 or not should_flip(m, e):  # flipped away since, or fine
+            continue
+        x = m.corner[e]
+        y = m.corner[m.twin[e]]
+        if 2 * (k + 4) + 1 > stack.shape[0]:
+            return False
+        _flip_and_remember(m, e)
+        # the quadrilateral x, u, y, v: its sides x-u, u-y, y-v, v-x
+        stack[2 * k + 1] = x
+        stack[2 * k + 2] = u
+        stack[2 * k + 3] = u
+        stack[2 * k + 4] = y
+        stack[2 * k + 5] = y
+        stack[2 * k + 6] = v
+        stack[2 * k + 7] = v
+        stack[2 * k + 8] = x
+        k += 4
+    return True
+
+
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _near(xy: cython.double[:, ::1], v: Index, px: cython.double, py: cython.double, tol: cython.double) -> cython.bint:
+    return fabs(xy[v, 0] - px) <= tol and fabs(xy[v, 1] - py) <= tol
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _split_at_crossing(
+    m: Mesh, segs: Subsegments, a: Index, b: Index, c: Index, stack: cython.longlong[::1]
+) -> tuple[Index, cython.bint]:
+    """Make a vertex where segment ``a b`` crosses subsegment edge ``c``.
+
+    Returns ``(v, reroute)``, ``v = -1`` if the tables are full.  The
+    crossing point is rounded, so it is inserted where it actually lies:
+    exactly on ``c`` it splits ``c``; anywhere else (or on an existing
+    vertex) ``reroute`` is True and the caller re-routes ``c`` through it.
+    The mesh stays a valid triangulation either way; forcing a rounded
+    point onto ``c`` could fold it.  A point within a few units in the last
+    place of one of the four endpoints is taken to be that endpoint: a
+    crossing vertex made earlier is only nearly on its lines, so later
+    segments through the same point would otherwise cross them again a
+    rounding error away, for ever.
+    """
+    xy = m.xy
+    nv: Index = m.nvert
+    r: Index = m.seg[c]
+    left: Index = m.corner[lprev(c)]
+    right: Index = m.corner[lnext(c)]
+    # parameter along the crossed subsegment, right -> left
+    ex: cython.double = xy[b, 0] - xy[a, 0]
+    ey: cython.double = xy[b, 1] - xy[a, 1]
+    tx: cython.double = xy[left, 0] - xy[right, 0]
+    ty: cython.double = xy[left, 1] - xy[right, 1]
+    den: cython.double = ty * ex - tx * ey
+    t: cython.double = 0.5
+    if den != 0.0:
+        t = (ey * (xy[right, 0] - xy[a, 0]) - ex * (xy[right, 1] - xy[a, 1])) / den
+        t = min(max(t, 0.0), 1.0)
+    px: cython.double = xy[right, 0] + t * tx
+    py: cython.double = xy[right, 1] + t * ty
+    tol: cython.double = 2.0**-48 * (fabs(px) + fabs(py)) + 1e-300
+    if _near(xy, right, px, py, tol):
+        return right, False
+    if _near(xy, left, px, py, tol):
+        return left, False
+    if _near(xy, a, px, py, tol):
+        return a, True
+    if _near(xy, b, px, py, tol):
+        return b, True
+    status: cython.int
+    e: Index
+    status, e = walk(m, c // 3, px, py, 4 * m.stamp.shape[0] + 64)
+    if status == LOC_ON_VERTEX:
+        return m.corner[lnext(e)], True
+    if status != LOC_INSIDE and status != LOC_ON_EDGE:
+        # rounded off the mesh (c is on the boundary): use c's nearer end
+        return (right if t < 0.5 else left), False
+    half: Index = new_record(segs, segs.marker[r], segs.source[r], segs.ends[r, 0], segs.ends[r, 1])
+    if half < 0:
+        return -1, False
+    xy[nv, 0] = px
+    xy[nv, 1] = py
+    set_parent(m, nv, right, left, right, t, 0.0)
+    m.nvert = nv + 1
+    m.vmark[nv] = segs.marker[r]
+    m.work[C_STEINER] += 1
+    reroute: cython.bint = True
+    first: Index
+    split: Index
+    on_line: Index
+    if status == LOC_INSIDE:
+        first = split_triangle(m, e // 3, nv)
+    else:
+        reroute = e != c and e != m.twin[c]
+        split = m.seg[e]
+        on_line = split_edge(m, e, nv)  # edge nv -> dest(e), first new triangle
+        if split != NO_SEG:  # the half nv -> dest(e) gets the new record
+            m.seg[on_line] = cython.cast(cython.int, half)
+            if m.twin[on_line] != NO_EDGE:
+                m.seg[m.twin[on_line]] = cython.cast(cython.int, half)
+        first = on_line // 3
+    n: Index = star_edges(m, first, stack)
+    last: Index = lawson(m, stack, n)
+    remember_corners(m, last)
+    return nv, reroute
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def insert_segments(m: Mesh, segs: Subsegments, work: Recovery) -> cython.int:
+    """Recover every piece on ``work``'s stack (the top is next).
+
+    Returns DONE, NEED_ROOM or NEED_BUFFER (grow and call again: nothing was
+    half done) or FAILED.  The pieces handled are bounded by the segments
+    and vertices, so that rounded crossing points that re-route each other
+    cannot loop for ever.
+    """
+    pieces: cython.longlong[:, ::1] = work.pieces
+    buf: cython.longlong[::1] = work.buf
+    sp: Index
+    a: Index
+    b: Index
+    src: Index
+    kind: cython.int
+    v: Index
+    c: Index
+    r: Index
+    cr: Index
+    cl: Index
+    p: Index
+    reroute: cython.bint
+    src_c: Index
+    marker: cython.int
+    while work.top > 0:
+        if work.handled > 8 * (work.inputs + m.nvert) + 1024:
+            return FAILED
+        work.handled += 1
+        if (
+            m.nvert >= m.xy.shape[0]
+            or spare_triangles(m) < 8
+            or segs.count + 2 > segs.marker.shape[0]
+            or work.top + 4 > pieces.shape[0]
+        ):
+            return NEED_ROOM
+        sp = work.top - 1
+        a = pieces[sp, 0]
+        b = pieces[sp, 1]
+        src = pieces[sp, 2]
+        marker = 1 if src < 0 else work.markers[src]  # -c hull segments have no input row
+        kind, v, c = _recover(m, segs, a, b, marker, cython.cast(cython.int, src), buf)
+        if kind == _PIECE_DONE:
+            work.top = sp
+        elif kind == _PIECE_CONTINUES:
+            pieces[sp, 0] = v
+        elif kind == _PIECE_BUFFER:
+            work.handled -= 1
+            return NEED_BUFFER
+        elif kind == _PIECE_CROSSES:
+            r = m.seg[c]
+            cr = m.corner[lnext(c)]
+            cl = m.corner[lprev(c)]
+            p, reroute = _split_at_crossing(m, segs, a, b, c, buf)
+            if p < 0:
+                return NEED_ROOM
+            if reroute:
+                # re-route the crossed subsegment through p: free the edge
+                # and queue its two halves as pieces of its own segment
+                c = find_edge(m, cr, cl)  # its id may have changed
+                if c < 0:
+                    return FAILED
+                m.seg[c] = NO_SEG
+                if m.twin[c] != NO_EDGE:
+                    m.seg[m.twin[c]] = NO_SEG
+                # freed, the edge may no longer be Delaunay
+                buf[0] = 1
+                buf[1] = cr
+                buf[2] = cl
+                if not restore_delaunay(m, buf):
+                    return FAILED
+                src_c = segs.source[r]
+                pieces[sp + 1, 0] = cr
+                pieces[sp + 1, 1] = p
+                pieces[sp + 1, 2] = src_c
+                pieces[sp + 2, 0] = p
+                pieces[sp + 2, 1] = cl
+                pieces[sp + 2, 2] = src_c
+                sp += 2
+            elif p == a or p == b:  # cannot happen: c never ends at a or b
+                return FAILED
+            if p != a and p != b:
+                pieces[sp + 1, 0] = pieces[work.top - 1, 0]  # a
+                pieces[work.top - 1, 0] = p  # p -> b later
+                pieces[sp + 1, 1] = p  # a -> p first
+                pieces[sp + 1, 2] = src
+                sp += 1
+            work.top = sp + 1
+        else:
+            return FAILED
+    return DONE
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def mark_hull(m: Mesh, segs: Subsegments, source: cython.int) -> cython.bint:
+    """-c (or refinement of a point set): every boundary edge becomes a
+    subsegment with marker 1; one that already is keeps its record but takes
+    marker 1 if its own is 0.  Returns False if records ran out."""
+    e: Index
+    for t in range(m.nslot):
+        if m.stamp[t] <= 0:
+            continue
+        for k in range(3):
+            e = 3 * t + k
+            if m.twin[e] == NO_EDGE:
+                if segs.count >= segs.marker.shape[0]:
+                    return False
+                mark_subsegment(m, segs, e, 1, source)
+    return True
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def count_inverted(m: Mesh) -> Index:
+    """Live finite triangles that are not strictly counter-clockwise (exact)."""
+    xy = m.xy
+    bad: Index = 0
+    a: Index
+    b: Index
+    c: Index
+    for t in range(m.nslot):
+        if m.stamp[t] <= 0:
+            continue
+        a, b, c = m.corner[3 * t], m.corner[3 * t + 1], m.corner[3 * t + 2]
+        if a < 0 or b < 0 or c < 0:
+            continue
+        if orient2d(xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[c, 0], xy[c, 1]) <= 0.0:
+            bad += 1
+    return bad
