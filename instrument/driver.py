@@ -12,6 +12,7 @@ import numpy as np
 
 from . import counters, quality, reconstruct
 from .mesh import NO_EDGE, NO_SEG, S_NLIVE, S_NVERT, live_triangles
+from .errors import TriangleError
 from .output import Result, _col, _put, edge_ends, interpolate_attributes, unique_edges
 from .pslg import Mesher, carve, clean_segments, enclose_hull, recover_segments, start
 from .strategies import strategy_id
@@ -32,6 +33,7 @@ INPUT_KEYS = frozenset(
         "neighbors",
         "edges",
         "edge_markers",
+        "triangle_neighbors",  # what the package's ``load`` names a .neigh file's array; ignored, as neighbors are
     }
 )
 
@@ -43,7 +45,7 @@ def _rows(tri: dict, key: str, cols: int, dtype) -> np.ndarray | None:
     if a.size == 0:
         return np.zeros((0, cols), dtype=dtype)
     if a.ndim != 2 or a.shape[1] != cols:
-        raise ValueError(f"{key} must have shape (N, {cols}), not {a.shape}")
+        raise TriangleError(f"{key} must have shape (N, {cols}), not {a.shape}")
     return np.ascontiguousarray(a)
 
 
@@ -52,7 +54,7 @@ def _column(tri: dict, key: str, n: int, dtype) -> np.ndarray | None:
         return None
     a = np.asarray(tri[key], dtype=dtype).reshape(-1)
     if a.shape[0] != n:
-        raise ValueError(f"{key} has {a.shape[0]} entries for {n} rows")
+        raise TriangleError(f"{key} has {a.shape[0]} entries for {n} rows")
     return a.copy()
 
 
@@ -62,11 +64,11 @@ def _validate(tri: dict, o: Options) -> dict:
         raise KeyError(f"unknown input key(s): {', '.join(sorted(map(str, unknown)))}")
     xy = np.asarray(tri.get("vertices", []), dtype=np.float64)
     if xy.size == 0 or xy.reshape(-1, 2).shape[0] < 3:
-        raise ValueError("Input must have at least three vertices.")
+        raise TriangleError("Input must have at least three vertices.")
     xy = _rows(tri, "vertices", 2, np.float64)
     if not np.isfinite(xy).all():
         bad = int(np.flatnonzero(~np.isfinite(xy).all(axis=1))[0])
-        raise ValueError(f"vertex {bad} has a coordinate that is not finite: {tuple(xy[bad])}")
+        raise TriangleError(f"vertex {bad} has a coordinate that is not finite: {tuple(xy[bad])}")
     n = xy.shape[0]
     out = {"vertices": xy}
     vm = _column(tri, "vertex_markers", n, np.int32)
@@ -84,7 +86,7 @@ def _validate(tri: dict, o: Options) -> dict:
             arr = _rows(tri, key, 2 if key == "holes" else 4, np.float64)
             if arr is not None and len(arr):
                 if not np.isfinite(arr[:, :2]).all():
-                    raise ValueError(f"{key} must have finite coordinates")
+                    raise TriangleError(f"{key} must have finite coordinates")
                 out[key] = arr
     return out
 

@@ -10,6 +10,7 @@ import numpy as np
 
 from . import cdt
 from . import refine as rf
+from .errors import TriangleError
 from .mesh import S_NSLOT
 from .pslg import Mesher, _widen
 from .strategies import strategy_id
@@ -20,7 +21,7 @@ STEINER = ("offcenter", "circumcenter")
 _TRACE_KINDS = ("segment", "circumcenter", "offcenter", "rejected", "deleted")
 
 
-class PrecisionError(RuntimeError):
+class PrecisionError(TriangleError):
     """Triangle's "Ran out of precision" failure: segments too short to split."""
 
 
