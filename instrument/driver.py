@@ -10,7 +10,7 @@ import dataclasses
 
 import numpy as np
 
-from . import counters, quality, reconstruct
+from . import counters, limits, quality, reconstruct, statistics
 from .mesh import NO_EDGE, NO_SEG, S_NLIVE, S_NVERT, live_triangles
 from .errors import TriangleError
 from .output import Result, _col, _put, edge_ends, interpolate_attributes, unique_edges
@@ -100,6 +100,8 @@ def triangulate(
     trace: bool = False,
     steiner: str = "offcenter",
     triunsuitable=None,
+    max_vertices: int | None = None,
+    progress=None,
 ) -> Result:
     """Triangulate, mesh or refine ``tri`` (the `triangle` package's dict) under
     Triangle's switches ``opts`` (library rules: no dash, 0-based indices).
@@ -112,6 +114,14 @@ def triangulate(
     ``triunsuitable(org, dest, apex, area) -> bool`` replaces Triangle's
     built-in size test for the ``u`` switch (``u`` without it uses the
     built-in one, as the `triangle` package does).
+
+    Refinement stops with ``SizeLimitError`` (a ``TriangleError``) when the
+    mesh passes ``max_vertices`` (default: derived from the input's size and
+    area bound, see ``instrument.limits``) instead of running out of memory;
+    a minimum angle above 34 degrees adds a warning to ``warnings``.
+    ``progress(vertices, limit)`` is called now and then during refinement.
+    With ``V`` (and no ``Q``) the statistics are printed to stdout, as
+    Triangle's library mode does.
     """
     o = parse(opts)
     inp = _validate(tri, o)
@@ -127,7 +137,19 @@ def triangulate(
         reconstruct.make_delaunay(ms)  # Bowyer-Watson needs a Delaunay mesh
     rows = None
     if refining:
-        rows = quality.run(ms, o, strategy=strategy, steiner=steiner, trace=trace, triunsuitable=triunsuitable)
+        warning = limits.angle_warning(o.min_angle) if o.q else None
+        if warning:
+            ms.warnings.append(warning)
+        rows = quality.run(
+            ms,
+            o,
+            strategy=strategy,
+            steiner=steiner,
+            trace=trace,
+            triunsuitable=triunsuitable,
+            max_vertices=max_vertices,
+            progress=progress,
+        )
     # with r, -j leaves out only undead vertices (duplicates, eaten ones),
     # which reconstruction never makes: unused input vertices stay, as in Triangle
     result = _assemble(ms, inp, dataclasses.replace(o, j=False) if o.r else o)
@@ -138,6 +160,8 @@ def triangulate(
         result.trace = rows
     result.work = counters.as_dict(work)
     result.warnings = ms.warnings
+    if o.V and not o.Q:
+        statistics.emit(statistics.library_report(tri, o, result, warnings=result.warnings))
     return result
 
 
