@@ -10,7 +10,7 @@ import dataclasses
 
 import numpy as np
 
-from . import counters, limits, quality, reconstruct, statistics
+from . import counters, limits, quality, reconstruct, secondorder, statistics
 from .mesh import NO_EDGE, NO_SEG, S_NLIVE, S_NVERT, live_triangles
 from .errors import TriangleError
 from .output import Result, _col, _put, edge_ends, interpolate_attributes, unique_edges
@@ -229,15 +229,39 @@ def _assemble(ms: Mesher, inp: dict, o: Options) -> Result:
     def ids(a):
         return np.take(new_id, a) if renumber else a.astype(np.int32, copy=False)
 
+    def edge_listing() -> tuple[np.ndarray, np.ndarray]:
+        """The edges as ``e`` lists them, and their markers."""
+        e = unique_edges(m, tris, tri_index)
+        if o.p or o.c:
+            marks = np.where(m.seg[e] != NO_SEG, ms.segs.marker[np.maximum(m.seg[e], 0)], 0)
+        else:
+            marks = m.twin[e] == NO_EDGE
+        return ids(edge_ends(m, e)), marks
+
+    verts = m.xy[:nv][keep]
+    vattrs = _vertex_attributes(ms, inp["vertex_attributes"], nv)[keep] if "vertex_attributes" in inp else None
+    vmarks = ms.vmark[:nv][keep]
+    triangles = ids(corners)
+    if o.order == 2 and tris.size:  # the midpoint nodes come after every other vertex
+        ends, marks = edge_listing()
+        extra = secondorder.midpoints(
+            triangles, ends, verts, first=verts.shape[0], attributes=vattrs, edge_markers=marks
+        )
+        triangles = extra.triangles
+        verts = np.vstack([verts, extra.vertices])
+        vmarks = np.concatenate([vmarks, extra.vertex_markers])
+        if vattrs is not None:
+            vattrs = np.vstack([vattrs, extra.vertex_attributes])
+
     out = Result()
     if not o.N:
-        _put(out, "vertices", m.xy[:nv][keep])
-        if "vertex_attributes" in inp:
-            _put(out, "vertex_attributes", _vertex_attributes(ms, inp["vertex_attributes"], nv)[keep])
+        _put(out, "vertices", verts)
+        if vattrs is not None:
+            _put(out, "vertex_attributes", vattrs)
         if not o.B:
-            _put(out, "vertex_markers", _col(ms.vmark[:nv][keep]))
+            _put(out, "vertex_markers", _col(vmarks))
     if not o.E:
-        _put(out, "triangles", ids(corners))
+        _put(out, "triangles", triangles)
         if o.A and ms.region_attr is not None:
             _put(out, "triangle_attributes", ms.region_attr[tris].reshape(-1, 1))
     constrained = None
@@ -252,13 +276,9 @@ def _assemble(ms: Mesher, inp: dict, o: Options) -> Result:
                 if key in inp:
                     _put(out, key, inp[key])
     if o.e:
-        e = unique_edges(m, tris, tri_index)
-        _put(out, "edges", ids(edge_ends(m, e)))
+        ends, marks = edge_listing()
+        _put(out, "edges", ends)
         if not o.B:
-            if o.p or o.c:
-                marks = np.where(m.seg[e] != NO_SEG, ms.segs.marker[np.maximum(m.seg[e], 0)], 0)
-            else:
-                marks = m.twin[e] == NO_EDGE
             _put(out, "edge_markers", _col(marks))
     if o.n:
         tw = m.twin.reshape(-1, 3)[tris]
