@@ -8,7 +8,9 @@ that it often refines forever (``-q40`` on A.poly does).  ``angle_warning``
 says so when a run asks for more than 34 degrees.
 
 The vertex limit of a run (``vertex_limit``), unless the caller sets one
-(``max_vertices=`` in Python, ``--max-vertices`` on the command line):
+(``max_vertices=`` in Python, ``--max-vertices`` on the command line).  It
+counts every vertex the run makes, the ones refinement deletes again
+included (they take memory until the end):
 
     max(1,000,000, 1,000 x (input vertices + segments))
     + 4 x (area of the domain) / (smallest area bound)      [with a, a bare a, or ra]
