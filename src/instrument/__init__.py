@@ -3,6 +3,8 @@
 ``import instrument as triangle`` gives the `triangle` package's API.
 """
 
+from importlib.metadata import PackageNotFoundError, version
+
 from . import purepython
 
 if purepython.requested():
@@ -13,8 +15,33 @@ purepython.require_compiled(_predicates)
 
 from .compat import convex_hull, delaunay, voronoi
 from .driver import triangulate
+from .errors import SizeLimitError, TriangleError
 from .output import Result
 from .plot import compare, comparev, plot, work
+from .samples import get_data, load, loads, show_data
 from .strategies import strategies
 
-__all__ = ["Result", "compare", "comparev", "convex_hull", "delaunay", "plot", "strategies", "triangulate", "voronoi", "work"]
+try:  # the distribution's version, as the package's ``__version__`` is its own
+    __version__ = version("ruppert")
+except PackageNotFoundError:  # running from a source tree that was never installed
+    __version__ = "0+unknown"
+
+__all__ = [
+    "Result",
+    "SizeLimitError",
+    "TriangleError",
+    "__version__",
+    "compare",
+    "comparev",
+    "convex_hull",
+    "delaunay",
+    "get_data",
+    "load",
+    "loads",
+    "plot",
+    "show_data",
+    "strategies",
+    "triangulate",
+    "voronoi",
+    "work",
+]

@@ -10,8 +10,9 @@ import dataclasses
 
 import numpy as np
 
-from . import counters, quality, reconstruct
+from . import counters, limits, quality, reconstruct, secondorder, statistics
 from .mesh import NO_EDGE, NO_SEG, S_NLIVE, S_NVERT, live_triangles
+from .errors import TriangleError
 from .output import Result, _col, _put, edge_ends, interpolate_attributes, unique_edges
 from .pslg import Mesher, carve, clean_segments, enclose_hull, recover_segments, start
 from .strategies import strategy_id
@@ -32,6 +33,7 @@ INPUT_KEYS = frozenset(
         "neighbors",
         "edges",
         "edge_markers",
+        "triangle_neighbors",  # what the package's ``load`` names a .neigh file's array; ignored, as neighbors are
     }
 )
 
@@ -43,7 +45,7 @@ def _rows(tri: dict, key: str, cols: int, dtype) -> np.ndarray | None:
     if a.size == 0:
         return np.zeros((0, cols), dtype=dtype)
     if a.ndim != 2 or a.shape[1] != cols:
-        raise ValueError(f"{key} must have shape (N, {cols}), not {a.shape}")
+        raise TriangleError(f"{key} must have shape (N, {cols}), not {a.shape}")
     return np.ascontiguousarray(a)
 
 
@@ -52,7 +54,7 @@ def _column(tri: dict, key: str, n: int, dtype) -> np.ndarray | None:
         return None
     a = np.asarray(tri[key], dtype=dtype).reshape(-1)
     if a.shape[0] != n:
-        raise ValueError(f"{key} has {a.shape[0]} entries for {n} rows")
+        raise TriangleError(f"{key} has {a.shape[0]} entries for {n} rows")
     return a.copy()
 
 
@@ -62,11 +64,11 @@ def _validate(tri: dict, o: Options) -> dict:
         raise KeyError(f"unknown input key(s): {', '.join(sorted(map(str, unknown)))}")
     xy = np.asarray(tri.get("vertices", []), dtype=np.float64)
     if xy.size == 0 or xy.reshape(-1, 2).shape[0] < 3:
-        raise ValueError("Input must have at least three vertices.")
+        raise TriangleError("Input must have at least three vertices.")
     xy = _rows(tri, "vertices", 2, np.float64)
     if not np.isfinite(xy).all():
         bad = int(np.flatnonzero(~np.isfinite(xy).all(axis=1))[0])
-        raise ValueError(f"vertex {bad} has a coordinate that is not finite: {tuple(xy[bad])}")
+        raise TriangleError(f"vertex {bad} has a coordinate that is not finite: {tuple(xy[bad])}")
     n = xy.shape[0]
     out = {"vertices": xy}
     vm = _column(tri, "vertex_markers", n, np.int32)
@@ -84,7 +86,7 @@ def _validate(tri: dict, o: Options) -> dict:
             arr = _rows(tri, key, 2 if key == "holes" else 4, np.float64)
             if arr is not None and len(arr):
                 if not np.isfinite(arr[:, :2]).all():
-                    raise ValueError(f"{key} must have finite coordinates")
+                    raise TriangleError(f"{key} must have finite coordinates")
                 out[key] = arr
     return out
 
@@ -98,6 +100,8 @@ def triangulate(
     trace: bool = False,
     steiner: str = "offcenter",
     triunsuitable=None,
+    max_vertices: int | None = None,
+    progress=None,
 ) -> Result:
     """Triangulate, mesh or refine ``tri`` (the `triangle` package's dict) under
     Triangle's switches ``opts`` (library rules: no dash, 0-based indices).
@@ -110,6 +114,14 @@ def triangulate(
     ``triunsuitable(org, dest, apex, area) -> bool`` replaces Triangle's
     built-in size test for the ``u`` switch (``u`` without it uses the
     built-in one, as the `triangle` package does).
+
+    Refinement stops with ``SizeLimitError`` (a ``TriangleError``) when the
+    mesh passes ``max_vertices`` (default: derived from the input's size and
+    area bound, see ``instrument.limits``) instead of running out of memory;
+    a minimum angle above 34 degrees adds a warning to ``warnings``.
+    ``progress(vertices, limit)`` is called now and then during refinement.
+    With ``V`` (and no ``Q``) the statistics are printed to stdout, as
+    Triangle's library mode does.
     """
     o = parse(opts)
     inp = _validate(tri, o)
@@ -125,7 +137,19 @@ def triangulate(
         reconstruct.make_delaunay(ms)  # Bowyer-Watson needs a Delaunay mesh
     rows = None
     if refining:
-        rows = quality.run(ms, o, strategy=strategy, steiner=steiner, trace=trace, triunsuitable=triunsuitable)
+        warning = limits.angle_warning(o.min_angle) if o.q else None
+        if warning:
+            ms.warnings.append(warning)
+        rows = quality.run(
+            ms,
+            o,
+            strategy=strategy,
+            steiner=steiner,
+            trace=trace,
+            triunsuitable=triunsuitable,
+            max_vertices=max_vertices,
+            progress=progress,
+        )
     # with r, -j leaves out only undead vertices (duplicates, eaten ones),
     # which reconstruction never makes: unused input vertices stay, as in Triangle
     result = _assemble(ms, inp, dataclasses.replace(o, j=False) if o.r else o)
@@ -136,6 +160,8 @@ def triangulate(
         result.trace = rows
     result.work = counters.as_dict(work)
     result.warnings = ms.warnings
+    if o.V and not o.Q:
+        statistics.emit(statistics.library_report(tri, o, result, warnings=result.warnings))
     return result
 
 
@@ -203,15 +229,39 @@ def _assemble(ms: Mesher, inp: dict, o: Options) -> Result:
     def ids(a):
         return np.take(new_id, a) if renumber else a.astype(np.int32, copy=False)
 
+    def edge_listing() -> tuple[np.ndarray, np.ndarray]:
+        """The edges as ``e`` lists them, and their markers."""
+        e = unique_edges(m, tris, tri_index)
+        if o.p or o.c:
+            marks = np.where(m.seg[e] != NO_SEG, ms.segs.marker[np.maximum(m.seg[e], 0)], 0)
+        else:
+            marks = m.twin[e] == NO_EDGE
+        return ids(edge_ends(m, e)), marks
+
+    verts = m.xy[:nv][keep]
+    vattrs = _vertex_attributes(ms, inp["vertex_attributes"], nv)[keep] if "vertex_attributes" in inp else None
+    vmarks = ms.vmark[:nv][keep]
+    triangles = ids(corners)
+    if o.order == 2 and tris.size:  # the midpoint nodes come after every other vertex
+        ends, marks = edge_listing()
+        extra = secondorder.midpoints(
+            triangles, ends, verts, first=verts.shape[0], attributes=vattrs, edge_markers=marks
+        )
+        triangles = extra.triangles
+        verts = np.vstack([verts, extra.vertices])
+        vmarks = np.concatenate([vmarks, extra.vertex_markers])
+        if vattrs is not None:
+            vattrs = np.vstack([vattrs, extra.vertex_attributes])
+
     out = Result()
     if not o.N:
-        _put(out, "vertices", m.xy[:nv][keep])
-        if "vertex_attributes" in inp:
-            _put(out, "vertex_attributes", _vertex_attributes(ms, inp["vertex_attributes"], nv)[keep])
+        _put(out, "vertices", verts)
+        if vattrs is not None:
+            _put(out, "vertex_attributes", vattrs)
         if not o.B:
-            _put(out, "vertex_markers", _col(ms.vmark[:nv][keep]))
+            _put(out, "vertex_markers", _col(vmarks))
     if not o.E:
-        _put(out, "triangles", ids(corners))
+        _put(out, "triangles", triangles)
         if o.A and ms.region_attr is not None:
             _put(out, "triangle_attributes", ms.region_attr[tris].reshape(-1, 1))
     constrained = None
@@ -226,13 +276,9 @@ def _assemble(ms: Mesher, inp: dict, o: Options) -> Result:
                 if key in inp:
                     _put(out, key, inp[key])
     if o.e:
-        e = unique_edges(m, tris, tri_index)
-        _put(out, "edges", ids(edge_ends(m, e)))
+        ends, marks = edge_listing()
+        _put(out, "edges", ends)
         if not o.B:
-            if o.p or o.c:
-                marks = np.where(m.seg[e] != NO_SEG, ms.segs.marker[np.maximum(m.seg[e], 0)], 0)
-            else:
-                marks = m.twin[e] == NO_EDGE
             _put(out, "edge_markers", _col(marks))
     if o.n:
         tw = m.twin.reshape(-1, 3)[tris]

@@ -14,6 +14,7 @@ from . import cdt
 from .carve_numba import infect_hull, locate_points, plague, spread_regions
 from .counters import C_STEINER
 from .delaunay import delaunay
+from .errors import TriangleError
 from .mesh import S_NVERT, Mesh, grow_triangles, grow_vertices, spare_triangles
 from .switches import Options
 
@@ -158,13 +159,13 @@ def recover_segments(ms: Mesher, rows: np.ndarray, seg_markers: np.ndarray) -> N
             if ms.work[C_STEINER] and cdt.count_inverted(ms.m):
                 # rounded intersection points of nearly concurrent segments
                 # can fold the mesh; never hand back a folded mesh
-                raise RuntimeError(_TOO_CLOSE)
+                raise TriangleError(_TOO_CLOSE)
             return
         # a segment cannot cross more triangles than there are
         lost = status == cdt.NEED_BUFFER and buf.shape[0] > 8 * (ms.m.stamp.shape[0] + 64)
         if status == cdt.FAILED or lost or ms.n_vertices > most_vertices:
             a, b, i = pieces[int(ms.segs.size[cdt.R_SP]) - 1]
-            raise RuntimeError(
+            raise TriangleError(
                 f"could not recover segment {i} between ({ms.m.xy[a, 0]:.17g}, {ms.m.xy[a, 1]:.17g}) and "
                 f"({ms.m.xy[b, 0]:.17g}, {ms.m.xy[b, 1]:.17g}): " + _TOO_CLOSE
             )

@@ -8,8 +8,9 @@ from collections.abc import Callable
 
 import numpy as np
 
-from . import cdt
+from . import cdt, limits
 from . import refine as rf
+from .errors import TriangleError
 from .mesh import S_NSLOT
 from .pslg import Mesher, _widen
 from .strategies import strategy_id
@@ -20,7 +21,7 @@ STEINER = ("offcenter", "circumcenter")
 _TRACE_KINDS = ("segment", "circumcenter", "offcenter", "rejected", "deleted")
 
 
-class PrecisionError(RuntimeError):
+class PrecisionError(TriangleError):
     """Triangle's "Ran out of precision" failure: segments too short to split."""
 
 
@@ -124,24 +125,58 @@ def run(
     steiner: str = "offcenter",
     trace: bool = False,
     triunsuitable: Callable | None = None,
+    max_vertices: int | None = None,
+    progress: Callable[[int, int], None] | None = None,
 ) -> np.ndarray | None:
     """Refine ``ms`` in place under ``o``; returns the trace rows if asked.
 
     With ``o.u`` and a Python ``triunsuitable``, the kernel refines until
     nothing is bad, then the callable judges every triangle made since, the
     unsuitable ones are queued and the kernel goes on, until a round finds
-    none: the hot loop never calls Python."""
+    none: the hot loop never calls Python.
+
+    ``max_vertices`` bounds the mesh (None: ``limits.vertex_limit``'s
+    default); passing it raises ``SizeLimitError``.  ``progress(vertices,
+    limit)`` is called whenever the kernel hands back control (every few
+    thousand splits)."""
     if steiner not in STEINER:
         raise ValueError(f"steiner must be one of {', '.join(STEINER)}, not {steiner!r}")
     if o.S == 0:
         return np.zeros(0, dtype=TRACE_DTYPE) if trace else None
     user = triunsuitable if o.u else None
-    _presize(ms, o)
+    domain = _domain_area(ms)
+    bound = _smallest_area_bound(ms, o)
+    if max_vertices is None:
+        n_input = ms.n_input + int(ms.segs.size[cdt.R_NREC])
+        limit = limits.vertex_limit(n_input=n_input, domain_area=domain, area_bound=bound, steiner_budget=o.S)
+    else:
+        limit = int(max_vertices)
+    why = limits.explain(max_vertices is None)
+    limits.check_expected(limit, domain, bound, explain=why)
+    _presize(ms, o, domain, limit)
     r = new_refiner(ms, o, strategy, steiner, trace, user is not None)  # every vertex so far: V_INPUT (0)
     cdt.build_vertex_edges(ms.m, ms.vtri)
     rf.tally_encroached(r, ms.m, ms.segs)
-    r = finish(ms, r, user)
+    guard = _Guard(limit, o.min_angle if o.q else 0.0, why, progress)
+    r = finish(ms, r, user, guard)
     return _trace_table(r.trace[: int(r.ipar[rf.I_NTRACE])]) if trace else None
+
+
+class _Guard:
+    """Between kernel calls: report progress, stop at the vertex limit."""
+
+    def __init__(self, limit: int, min_angle: float, why: str, progress: Callable[[int, int], None] | None):
+        self.limit = limit
+        self.min_angle = min_angle
+        self.why = why
+        self.progress = progress
+
+    def __call__(self, ms: Mesher) -> None:
+        n = ms.n_vertices
+        if self.progress is not None:
+            self.progress(n, self.limit)
+        if n > self.limit:
+            raise limits.stopped(n, self.limit, self.min_angle, explain=self.why)
 
 
 # Measured: q20-q34 meshes under a fixed area bound A come out at 1.2-1.6 triangles per A
@@ -150,18 +185,37 @@ TRIANGLES_PER_AREA_BOUND = 1.7
 PRESIZE_LIMIT = 1 << 26  # triangles: beyond this, grow on demand
 
 
-def _presize(ms: Mesher, o: Options) -> None:
-    """Under a fixed area bound the mesh size is predictable: make room for
-    it at once rather than doubling (and copying) a dozen times."""
-    if not o.max_area > 0:
-        return
+def _domain_area(ms: Mesher) -> float:
+    """The area the mesh covers (its live triangles, no ghosts)."""
     from .check import mesh_area  # only here: the command's start-up does not need the checker
 
     m = ms.m
     n = int(m.size[S_NSLOT])
     c = m.corner[: 3 * n].reshape(-1, 3)
-    area = mesh_area({"vertices": m.xy, "triangles": c[(m.stamp[:n] > 0) & (c.min(axis=1) >= 0)]})  # no ghosts
-    want = min(TRIANGLES_PER_AREA_BOUND * area / o.max_area, PRESIZE_LIMIT)
+    return mesh_area({"vertices": m.xy, "triangles": c[(m.stamp[:n] > 0) & (c.min(axis=1) >= 0)]})
+
+
+def _smallest_area_bound(ms: Mesher, o: Options) -> float | None:
+    """The smallest area bound of the run: -a's number, or the smallest
+    regional / per-triangle bound of a bare -a."""
+    bounds = [o.max_area] if o.max_area > 0 else []
+    if o.var_area and ms.region_area is not None:
+        n = int(ms.m.size[S_NSLOT])
+        live = ms.region_area[:n][ms.m.stamp[:n] > 0]
+        live = live[np.isfinite(live) & (live > 0)]
+        if live.size:
+            bounds.append(float(live.min()))
+    return min(bounds) if bounds else None
+
+
+def _presize(ms: Mesher, o: Options, area: float, limit: int) -> None:
+    """Under a fixed area bound the mesh size is predictable: make room for
+    it at once rather than doubling (and copying) a dozen times (never for
+    more than the vertex limit allows)."""
+    if not o.max_area > 0:
+        return
+    n = int(ms.m.size[S_NSLOT])
+    want = min(TRIANGLES_PER_AREA_BOUND * area / o.max_area, PRESIZE_LIMIT, 2.0 * limit)
     if want > 2 * n:  # vertices: about half the triangles, and the free vertices Chew's rule deletes
         ms.grow(vertices=int(0.7 * want), triangles=int(want))
 
@@ -185,14 +239,20 @@ def _judge(m, user: Callable, judged: np.ndarray) -> tuple[np.ndarray, np.ndarra
     return judged, np.asarray(bad, dtype=np.int64)
 
 
-def finish(ms: Mesher, r: rf.Refiner, user: Callable | None = None) -> rf.Refiner:
+def finish(
+    ms: Mesher, r: rf.Refiner, user: Callable | None = None, guard: Callable[[Mesher], None] | None = None
+) -> rf.Refiner:
     """Run the refinement kernel to the end: grow its arrays when it asks,
     let Python in when it pauses (Ctrl-C), consult ``user`` when it is done,
-    and turn a precision failure into Triangle's error.  Leaves the
-    per-triangle results on ``ms``; returns the final refiner."""
+    and turn a precision failure into Triangle's error.  ``guard(ms)`` runs
+    each time the kernel hands back control, before anything grows (it may
+    raise to stop the run).  Leaves the per-triangle results on ``ms``;
+    returns the final refiner."""
     judged = np.zeros(0, dtype=ms.m.stamp.dtype)  # the stamp each slot had when the callable judged it
     while True:
         status = rf.refine(r, ms.m, ms.segs, ms.vmark, ms.parent, ms.vtri, ms.work, ms.state)
+        if guard is not None and status != rf.DONE:
+            guard(ms)
         if status == rf.DONE and user is not None and r.ipar[rf.I_BUDGET] != 0:
             judged, bad = _judge(ms.m, user, judged)
             while r.hkey.shape[0] < rf.queue_used(r) + bad.shape[0] + 16:

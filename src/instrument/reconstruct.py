@@ -48,6 +48,7 @@ import numpy as np
 
 from . import cdt, counters
 from .counters import C_CREATED
+from .errors import TriangleError
 from .insert import flip, should_flip
 from .jit import kernel
 from .mesh import (
@@ -310,19 +311,19 @@ _PROBLEMS = {
 def _triangles(tri: dict, n: int) -> np.ndarray:
     """The ``triangles`` key as an (M, k >= 3) int64 array with indices in range."""
     if tri.get("triangles") is None:
-        raise ValueError("refining (r) needs the mesh's 'triangles'")
+        raise TriangleError("refining (r) needs the mesh's 'triangles'")
     raw = np.asarray(tri["triangles"])
     if raw.size == 0:
         return np.zeros((0, 3), dtype=np.int64)
     if raw.ndim != 2 or raw.shape[1] < 3:
-        raise ValueError(f"triangles must have shape (M, 3) or (M, 6), not {raw.shape}")
+        raise TriangleError(f"triangles must have shape (M, 3) or (M, 6), not {raw.shape}")
     if raw.dtype.kind not in "iu" and (raw.dtype.kind != "f" or not np.array_equal(raw, np.round(raw))):
-        raise ValueError("triangles must hold integer vertex indices")
+        raise TriangleError("triangles must hold integer vertex indices")
     t = raw.astype(np.int64)
     out = (t < 0) | (t >= n)
     if out.any():
         i, j = np.argwhere(out)[0]
-        raise ValueError(f"triangle {i} has an invalid vertex index {t[i, j]} (there are {n} vertices)")
+        raise TriangleError(f"triangle {i} has an invalid vertex index {t[i, j]} (there are {n} vertices)")
     return t
 
 
@@ -332,7 +333,7 @@ def _per_triangle(tri: dict, key: str, m: int) -> np.ndarray | None:
     a = np.asarray(tri[key], dtype=np.float64)
     a = a.reshape(a.shape[0], -1) if a.ndim else a.reshape(1, 1)
     if a.shape[0] != m:
-        raise ValueError(f"{key} has {a.shape[0]} rows for {m} triangles")
+        raise TriangleError(f"{key} has {a.shape[0]} rows for {m} triangles")
     return np.ascontiguousarray(a)
 
 
@@ -370,7 +371,7 @@ def _check_and_link(corners: np.ndarray, xy: np.ndarray) -> tuple[np.ndarray, np
     bad = np.zeros(4, dtype=np.int64)
     status = _link(flat, xy, start, np.zeros(nv, dtype=np.int64), order, dst, twin, bad)
     if status != LINK_OK:
-        raise ValueError("cannot refine: " + _PROBLEMS[status].format(*bad[1:].tolist()))
+        raise TriangleError("cannot refine: " + _PROBLEMS[status].format(*bad[1:].tolist()))
     return twin, start, order
 
 
@@ -446,7 +447,7 @@ def _segments(ms: Mesher, inp: dict, new_id: np.ndarray, corners: np.ndarray, st
     out = (seg < 0) | (seg >= n_old)
     if out.any():
         i = int(np.flatnonzero(out.any(axis=1))[0])
-        raise ValueError(f"Segment {i} has an invalid vertex index.")
+        raise TriangleError(f"Segment {i} has an invalid vertex index.")
     seg = new_id[seg]
     used = np.zeros(inp["vertices"].shape[0] + 1, dtype=bool)
     used[corners.ravel()] = True

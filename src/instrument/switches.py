@@ -14,13 +14,16 @@ import math
 import re
 from dataclasses import dataclass
 
+from .errors import TriangleError
+
 _NUMBER = re.compile(r"[0-9.]*")
 _FLOAT_PREFIX = re.compile(r"[0-9]*\.?[0-9]*")
 _EXPONENT = re.compile(r"[eE][-+]?[0-9]+")
 
 
-class SwitchError(ValueError):
-    """A switch string that Triangle would reject (e.g. a non-positive area)."""
+class SwitchError(TriangleError):
+    """A switch string that Triangle would reject (e.g. a non-positive area);
+    the `triangle` package reports these as RuntimeError, so it is both."""
 
 
 @dataclass
@@ -111,9 +114,12 @@ def parse(opts: str, *, library: bool = True) -> Options:
     while i < len(s):
         ch = s[i]
         i += 1
+        start = i  # where a switch's number starts
         if ch == "q":
             o.q = True
             value, i = _read_float(s, i)
+            if value is not None and not math.isfinite(value):
+                raise SwitchError(f"Minimum angle {s[start:i]} is out of range (it overflows a double).")
             o.min_angle = 20.0 if value is None else value
         elif ch == "a":
             value, i = _read_float(s, i)
@@ -122,6 +128,8 @@ def parse(opts: str, *, library: bool = True) -> Options:
             else:
                 if not value > 0.0:
                     raise SwitchError("Maximum area must be greater than zero.")
+                if not math.isfinite(value):
+                    raise SwitchError(f"Maximum area {s[start:i]} is out of range (it overflows a double).")
                 o.max_area = value
         elif ch == "S":
             digits = re.match(r"[0-9]*", s[i:]).group()

@@ -27,6 +27,8 @@ from typing import Any, TextIO
 
 import numpy as np
 
+from instrument import limits
+
 from . import naming, stats
 from .api import read_set, write
 from .errors import FormatError
@@ -73,6 +75,7 @@ SHORT_HELP = f"""{USAGE}
     -h  Help:  Detailed instructions for ruppert.
 Long options: --strategy NAME  --steiner offcenter|circumcenter  --seed N
     --work-json PATH  --trace PATH  --format FMT[,FMT...]  --progress
+    --max-vertices N  --version
 """
 
 LONG_HELP = f"""ruppert: a two-dimensional quality mesh generator and Delaunay triangulator
@@ -148,7 +151,22 @@ Long options (ruppert's own):
     --format FMT        Also write the mesh with meshio, e.g. vtu, gmsh22,
                         xdmf, vtk (comma-separated for several).  "msh" means
                         Gmsh 2.2 here (meshio would take it as ANSYS).
-    --progress          Show a progress display on a terminal.
+    --progress          Show the progress display from the start (on a
+                        terminal it appears anyway once a run has taken
+                        about a second; never with -Q or when stderr is not
+                        a terminal).
+    --max-vertices N    Stop refinement with an error once the mesh has more
+                        than N vertices.  The default is derived from the
+                        input: max(1,000,000, 1,000 per input vertex and
+                        segment), plus 4 per maximum area of domain with -a,
+                        raised to the input plus -S's budget, and at most
+                        what half of this machine's memory holds.  An area
+                        bound whose mesh needs more fails at once.
+    --version           Print ruppert's version.
+
+A minimum angle above 34 degrees prints a warning: Triangle's documentation
+says refinement is guaranteed to terminate up to 28.6 degrees and usually
+does up to 34; above that it may refine until the vertex limit.
 
 Exit status: 0 on success, 1 on an error (one line starting with "Error:"),
 130 when interrupted.
@@ -171,8 +189,11 @@ TRACE_HEADER = ("step", "kind", "x", "y", "triangles_created")
 #: meshio formats whose extension meshio's table does not give.
 FORMAT_EXTENSIONS = {"gmsh22": ".msh", "gmsh": ".msh", "vtk42": ".vtk", "vtk51": ".vtk"}
 
-_LONG_WITH_VALUE = ("--strategy", "--steiner", "--seed", "--work-json", "--trace", "--format")
-_LONG_FLAGS = ("--progress", "--help")
+_LONG_WITH_VALUE = ("--strategy", "--steiner", "--seed", "--work-json", "--trace", "--format", "--max-vertices")
+_LONG_FLAGS = ("--progress", "--help", "--version")
+
+#: A run shows its progress on a terminal once it has taken this long (seconds).
+PROGRESS_AFTER = 1.0
 
 
 class CliError(Exception):
@@ -193,8 +214,32 @@ def _long_parser() -> argparse.ArgumentParser:
     p.add_argument("--trace", default=None)
     p.add_argument("--format", dest="formats", action="append", default=[])
     p.add_argument("--progress", action="store_true")
+    p.add_argument("--max-vertices", dest="max_vertices", type=_positive_int, default=None)
     p.add_argument("--help", action="store_true")
+    p.add_argument("--version", action="store_true")
     return p
+
+
+def _positive_int(text: str) -> int:
+    try:
+        value = int(text.replace("_", "").replace(",", ""))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a whole number: {text!r}") from None
+    if value <= 0:
+        raise argparse.ArgumentTypeError(f"must be positive, not {value}")
+    return value
+
+
+def version() -> str:
+    """The installed distribution's version (the engine's ``__version__``),
+    read without importing the engine."""
+    from importlib.metadata import PackageNotFoundError
+    from importlib.metadata import version as dist_version
+
+    try:
+        return dist_version("ruppert")
+    except PackageNotFoundError:
+        return "0+unknown"
 
 
 # --------------------------------------------------------------------------
@@ -287,6 +332,9 @@ def _run(argv: list[str], out: TextIO) -> int:
     from instrument.switches import SwitchError, parse
 
     cmd = _split(argv)
+    if cmd.long.version:
+        out.write(f"ruppert {version()}\n")
+        return 0
     help_at = re.search(r"[hH?]", cmd.switches)
     if help_at or cmd.long.help:
         if help_at:  # Triangle stops parsing at h: earlier switches may still fail
@@ -336,15 +384,20 @@ def _run(argv: list[str], out: TextIO) -> int:
         warn("Warning:  -j and -N switches are somewhat incompatible.")
         warn("  If any vertices are jettisoned, the mesh needs the output .node file.")
 
+    angle_warning = limits.angle_warning(o.min_angle) if o.q else None
+    if angle_warning:  # before the run: it may be long
+        warn(angle_warning)
     result, engine_ms = _triangulate(data, o, cmd.long, engine_kwargs, quiet)
-    ntriangles = len(stats._triangles(result))
-    _phase_lines(o, say, ntriangles)
+    ntriangles = len(stats.triangle_rows(result))
+    for line in stats.phase_lines(o, ntriangles):
+        say(line)
     if not o.r:
         for line in _duplicate_warnings(data["vertices"]):
             warn(line)
     else:  # segments that are not edges of the mesh, or end off it
         for line in getattr(result, "warnings", None) or []:
-            warn(line)
+            if line != angle_warning:
+                warn(line)
     say()
 
     # Output files (reference §2.10), in Triangle's order.
@@ -358,7 +411,7 @@ def _run(argv: list[str], out: TextIO) -> int:
     try:
         write(
             outbase,
-            _with_empty_arrays(mesh, kinds, o.order),
+            _with_empty_arrays(mesh, kinds, o.order, markers=not o.B),
             first_index=info.first_index,
             markers=not o.B,
             kinds=kinds,
@@ -416,6 +469,8 @@ def _engine_kwargs(long: argparse.Namespace) -> dict[str, Any]:
         kwargs["steiner"] = long.steiner
     if long.trace:
         kwargs["trace"] = True
+    if long.max_vertices is not None:
+        kwargs["max_vertices"] = long.max_vertices
     return kwargs
 
 
@@ -474,14 +529,10 @@ def _triangulate(data, o, long, kwargs, quiet):
             tri[key] = value
     opts = engine_switches(o)
     t0 = time.perf_counter()
+    progress = _Progress(enabled=not quiet and _is_terminal(sys.stderr), eager=long.progress)
     try:
-        if long.progress and not quiet and sys.stderr.isatty():
-            from rich.console import Console
-
-            with Console(stderr=True).status("Meshing..."):
-                result = instrument.triangulate(tri, opts, **kwargs)
-        else:
-            result = instrument.triangulate(tri, opts, **kwargs)
+        with progress:
+            result = instrument.triangulate(tri, opts, progress=progress, **kwargs)
     except NotImplementedError as exc:
         raise CliError(str(exc) or "not implemented yet") from None
     except (ValueError, RuntimeError, KeyError) as exc:
@@ -489,22 +540,49 @@ def _triangulate(data, o, long, kwargs, quiet):
     return result, 1000 * (time.perf_counter() - t0)
 
 
-def _phase_lines(o, say, ntriangles: int) -> None:
-    """Triangle's phase lines (reference §3.1), without its timing lines."""
-    if o.r:
-        say("Reconstructing mesh.")
-    else:
-        # the method that ran: -F has no sweepline here and runs divide and conquer
-        method = "incremental" if o.i else "divide-and-conquer"
-        say(f"Constructing Delaunay triangulation by {method} method.")
-    if o.uses_segments and not o.r:
-        say("Recovering segments in Delaunay triangulation.")
-    if o.p and not o.r and not (o.O and o.c):
-        say("Removing unwanted triangles.")
-    if o.quality and ntriangles > 0:
-        say("Adding Steiner points to enforce quality.")
-    if o.order == 2:
-        say("Adding vertices for second-order triangles.")
+def _is_terminal(stream) -> bool:
+    try:
+        return bool(stream.isatty())
+    except (AttributeError, ValueError):
+        return False
+
+
+class _Progress:
+    """The progress display on a terminal (stderr), with rich: it appears
+    once the run has taken ``PROGRESS_AFTER`` seconds (at once with
+    ``--progress``) and shows the refinement's vertices against the limit.
+    The engine calls it whenever its kernel hands back control."""
+
+    def __init__(self, *, enabled: bool, eager: bool):
+        self.enabled = enabled
+        self.eager = eager
+        self.start = time.perf_counter()
+        self.status = None
+
+    def __enter__(self):
+        if self.enabled and self.eager:
+            self._show("Meshing...")
+        return self
+
+    def __exit__(self, *exc) -> None:
+        if self.status is not None:
+            self.status.stop()
+            self.status = None
+
+    def __call__(self, vertices: int, limit: int) -> None:
+        if not self.enabled:
+            return
+        text = f"Refining: {vertices:,} vertices (limit {limit:,})"
+        if self.status is not None:
+            self.status.update(text)
+        elif time.perf_counter() - self.start >= PROGRESS_AFTER:
+            self._show(text)
+
+    def _show(self, text: str) -> None:
+        from rich.console import Console  # only for runs that show it (rich comes with meshio)
+
+        self.status = Console(stderr=True).status(text)
+        self.status.start()
 
 
 def _duplicate_warnings(vertices) -> list[str]:
@@ -537,13 +615,19 @@ def _output_mesh(result, data, o) -> dict[str, Any]:
     return mesh
 
 
-def _with_empty_arrays(mesh: Mapping[str, Any], kinds: list[str], order: int) -> dict[str, Any]:
-    """``mesh`` with empty arrays for the files to write whose data the engine left out."""
+def _with_empty_arrays(
+    mesh: Mapping[str, Any], kinds: list[str], order: int, *, markers: bool = True
+) -> dict[str, Any]:
+    """``mesh`` with empty arrays for the files to write whose data the engine
+    left out (it leaves out empty arrays, as the `triangle` package does).
+    Empty marker arrays too: Triangle's .poly and .edge headers declare a
+    marker column unless -B (``0  1``), even when there is no row."""
+    mark = [("segment_markers", (0, 1), np.int32)] if markers else []
     needs = {
         "ele": [("triangles", (0, 6 if order == 2 else 3), np.int32)],
         "off": [("triangles", (0, 6 if order == 2 else 3), np.int32)],
-        "poly": [("segments", (0, 2), np.int32), ("holes", (0, 2), np.float64)],
-        "edge": [("edges", (0, 2), np.int32)],
+        "poly": [("segments", (0, 2), np.int32), *mark, ("holes", (0, 2), np.float64)],
+        "edge": [("edges", (0, 2), np.int32), *([("edge_markers", (0, 1), np.int32)] if markers else [])],
         "neigh": [("neighbors", (0, 3), np.int32)],
     }
     out = dict(mesh)
@@ -589,7 +673,7 @@ def _statistics(o, data, info: Info, mesh, result) -> str:
     text = stats.statistics_block(
         counts,
         input_vertices=len(np.asarray(data["vertices"]).reshape(-1, 2)),
-        input_triangles=len(stats._triangles(data)),
+        input_triangles=len(stats.triangle_rows(data)),
         input_segments=len(np.asarray(data.get("segments", np.zeros((0, 2)))).reshape(-1, 2))
         + skipped,
         input_holes=len(np.asarray(data.get("holes", np.zeros((0, 2)))).reshape(-1, 2)),

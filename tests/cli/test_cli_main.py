@@ -238,7 +238,11 @@ def test_long_options_reach_the_engine(workdir, monkeypatch):
 
     monkeypatch.setattr(instrument, "triangulate", spy)
     assert cli.main(["-Q", "dots", "--strategy", "fifo", "--seed", "7", "--trace", "t.csv"]) == 0
+    assert callable(seen.pop("progress"))  # the progress display's hook, always passed
     assert seen == {"strategy": "fifo", "seed": 7, "trace": True}
+    seen.clear()
+    assert cli.main(["-Q", "dots", "--max-vertices", "5000"]) == 0
+    assert seen["max_vertices"] == 5000
     assert cli.main(["-Q", "dots", "--progress"]) == 0  # accepted (a display on terminals only)
 
 

@@ -13,6 +13,7 @@ import numpy as np
 from ..core.navigate import build_vertex_edges
 from ..core.status import DONE, FAILED, NEED_BUFFER
 from ..counters import C_STEINER
+from ..errors import TriangleError
 from ..state import MeshState
 from .recover import Recovery, count_inverted, insert_segments, mark_hull
 
@@ -61,14 +62,14 @@ def recover_segments(ms: MeshState, rows: np.ndarray, seg_markers: np.ndarray) -
             if ms.work[C_STEINER] and count_inverted(m):
                 # rounded intersection points of nearly concurrent segments
                 # can fold the mesh; never hand back a folded mesh
-                raise RuntimeError(TOO_CLOSE)
+                raise TriangleError(TOO_CLOSE)
             return
         # a segment cannot cross more triangles than there are
         lost = status == NEED_BUFFER and work.buf.shape[0] > 8 * (m.triangle_capacity + 64)
         if status == FAILED or lost or m.nvert > most_vertices:
             a, b, i = work.current
             xy = m.xy
-            raise RuntimeError(
+            raise TriangleError(
                 f"could not recover segment {i} between ({xy[a, 0]:.17g}, {xy[a, 1]:.17g}) and "
                 f"({xy[b, 0]:.17g}, {xy[b, 1]:.17g}): " + TOO_CLOSE
             )

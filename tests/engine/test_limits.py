@@ -1,0 +1,106 @@
+"""Clear limits instead of memory exhaustion: the angle warning, the vertex
+limit (default and ``max_vertices``), area bounds beyond it, the progress hook."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import instrument
+from instrument import limits
+from instrument.check import check_mesh
+from instrument.errors import SizeLimitError, TriangleError
+
+A = instrument.get_data("square_hole")
+LETTER_A = instrument.get_data("A")  # Triangle's A.poly (from the triangle package): q36 and up never end
+SQUARE = {"vertices": [[0, 0], [1, 0], [1, 1], [0, 1]], "segments": [[0, 1], [1, 2], [2, 3], [3, 0]]}
+
+
+def test_the_documented_formula():
+    ceiling = 10**9
+    assert limits.vertex_limit(n_input=8, domain_area=15.0, area_bound=None, ceiling=ceiling) == 1_000_000
+    assert limits.vertex_limit(n_input=5_000, domain_area=15.0, area_bound=None, ceiling=ceiling) == 5_000_000
+    assert limits.vertex_limit(n_input=8, domain_area=15.0, area_bound=1e-4, ceiling=ceiling) == 1_000_000 + 600_000
+    assert limits.vertex_limit(n_input=8, domain_area=1.0, area_bound=None, steiner_budget=3_000_000, ceiling=ceiling) == 3_000_008
+    assert limits.vertex_limit(n_input=8, domain_area=1.0, area_bound=1e-30, ceiling=ceiling) == ceiling
+    assert limits.memory_ceiling() >= limits.MIN_LIMIT
+
+
+@pytest.mark.parametrize("angle", [36, 40, 60])
+def test_steep_angles_stop_at_the_limit(angle):
+    with pytest.raises(SizeLimitError) as info:
+        instrument.triangulate(LETTER_A, f"pq{angle}", max_vertices=5_000)
+    text = str(info.value)
+    assert text.startswith("Refinement stopped at ") and "(limit 5,000; set by max_vertices" in text
+    assert f"a minimum angle of {angle} degrees is above 34" in text
+    assert "use -S, a smaller angle, or --max-vertices" in text
+    n = int(text.split()[3].replace(",", ""))
+    assert 5_000 < n < 5_000 + 3 * 2**14  # stopped within one slice of the kernel's work
+    assert isinstance(info.value, RuntimeError) and isinstance(info.value, ValueError)
+
+
+def test_the_default_limit_stops_too(monkeypatch):
+    monkeypatch.setattr(limits, "MIN_LIMIT", 20_000)
+    monkeypatch.setattr(limits, "VERTICES_PER_INPUT", 100)
+    with pytest.raises(SizeLimitError, match=r"\(limit 20,000; derived from the input's size and area bound"):
+        instrument.triangulate(LETTER_A, "pq40")
+
+
+def test_an_area_bound_beyond_the_limit_fails_at_once():
+    with pytest.raises(SizeLimitError, match="A maximum area of 1e-30 over a domain of area 1 needs about 8e"):
+        instrument.triangulate(SQUARE, "pq30a1e-30")
+    with pytest.raises(SizeLimitError, match="more than the limit of 1,000"):
+        instrument.triangulate(SQUARE, "pq30a1e-5", max_vertices=1_000)
+
+
+def test_regional_and_per_triangle_bounds_count():
+    d = {**SQUARE, "regions": [[0.5, 0.5, 1, 1e-30]]}
+    with pytest.raises(SizeLimitError, match="maximum area of 1e-30"):
+        instrument.triangulate(d, "pq30a")
+    mesh = instrument.triangulate(SQUARE, "pq30a0.1")
+    mesh = {k: mesh[k] for k in ("vertices", "vertex_markers", "triangles")}
+    mesh["triangle_max_area"] = np.full(len(mesh["triangles"]), 1e-30)
+    with pytest.raises(SizeLimitError, match="maximum area of 1e-30"):
+        instrument.triangulate(mesh, "rq30a")
+
+
+def test_under_the_limit_nothing_changes():
+    r = instrument.triangulate(A, "pq30a0.001")
+    assert check_mesh(r, A, min_angle=30, max_area=0.001) == []
+    assert r.warnings == []
+    # the limit counts every vertex made, deleted ones too: room for those
+    same = instrument.triangulate(A, "pq30a0.001", max_vertices=2 * len(r["vertices"]))
+    np.testing.assert_array_equal(same["vertices"], r["vertices"])
+
+
+def test_angle_warning_is_in_the_result():
+    r = instrument.triangulate(A, "pq38S300")
+    assert check_mesh(r, A) == []
+    assert len(r["vertices"]) <= 8 + 300
+    assert [w for w in r.warnings if w.startswith("Warning:  A minimum angle of 38 degrees is above 34")]
+    assert instrument.triangulate(A, "pq34").warnings == []
+    assert limits.angle_warning(34.0) is None and limits.angle_warning(34.5) is not None
+
+
+def test_progress_hook():
+    calls = []
+    r = instrument.triangulate(SQUARE, "pq30a0.00002", progress=lambda n, limit: calls.append((n, limit)))
+    assert check_mesh(r, SQUARE, min_angle=30, max_area=0.00002) == []
+    assert calls, "the kernel handed back control at least once"
+    assert all(0 < n <= 2 * len(r["vertices"]) and limit >= 1_000_000 for n, limit in calls)
+    assert [n for n, _ in calls] == sorted(n for n, _ in calls)
+
+
+def test_a_progress_hook_may_stop_the_run():
+    class Stop(Exception):
+        pass
+
+    def stop(n, limit):
+        raise Stop
+
+    with pytest.raises(Stop):
+        instrument.triangulate(SQUARE, "pq30a0.00002", progress=stop)
+
+
+def test_size_limit_error_is_a_triangle_error():
+    assert issubclass(SizeLimitError, TriangleError)
