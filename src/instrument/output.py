@@ -80,3 +80,120 @@ def edge_ends(m: Mesh, e: np.ndarray) -> np.ndarray:
     nxt = np.where(e % 3 == 2, e - 2, e + 1)
     prv = np.where(e % 3 == 0, e + 2, e - 1)
     return np.stack([m.corner[nxt], m.corner[prv]], axis=1)
+
+
+# ---------------------------------------------------------------- assembly
+
+
+def assemble(ms, inp: dict, o) -> Result:
+    """The output dict of the mesh in ``ms`` (a ``MeshState``) under the
+    switches ``o``, with the input ``inp`` (for its attributes, holes and
+    regions): Triangle's keys, numbering and order."""
+    from .core.mesh import interpolate_attributes as interpolate  # the compiled kernel
+    from .secondorder import midpoints
+
+    m = ms.mesh
+    arrays = m.arrays()
+    corner, twin, seg = arrays["corner"], arrays["twin"], arrays["seg"]
+    nv = m.nvert
+    tris = m.live_triangles()
+    tri_index = np.full(m.triangle_capacity, -1, dtype=np.int32)
+    tri_index[tris] = np.arange(tris.size, dtype=np.int32)
+    corners = corner.reshape(-1, 3)[tris]
+    marker = np.asarray(ms.segs.marker)
+
+    if o.j:
+        keep = np.zeros(nv, dtype=bool)
+        keep[corners.ravel()] = True
+        if ms.collinear:  # no triangle ever existed: only duplicates are unused
+            keep[: ms.n_input] = ms.dup < 0
+    else:
+        keep = np.ones(nv, dtype=bool)
+    if ms.dead is not None and ms.dead.size:
+        keep[ms.dead] = False
+    renumber = o.j or not keep.all()
+    new_id = (np.cumsum(keep) - 1).astype(np.int32)
+
+    def ids(a):
+        return np.take(new_id, a) if renumber else a.astype(np.int32, copy=False)
+
+    def edge_listing() -> tuple[np.ndarray, np.ndarray]:
+        """The edges as ``e`` lists them, and their markers."""
+        e = listed_edges(corner, twin, seg, tris, tri_index)
+        if o.p or o.c:
+            marks = np.where(seg[e] != NO_SEG, marker[np.maximum(seg[e], 0)], 0)
+        else:
+            marks = twin[e] == NO_EDGE
+        return ids(ends_of(corner, e)), marks
+
+    verts = arrays["xy"][:nv][keep]
+    vattrs = None
+    if "vertex_attributes" in inp:
+        attrs = np.zeros((nv, inp["vertex_attributes"].shape[1]))
+        attrs[: ms.n_input] = inp["vertex_attributes"]
+        interpolate(m, attrs, ms.n_input)
+        vattrs = attrs[keep]
+    vmarks = arrays["vmark"][:nv][keep]
+    triangles = ids(corners)
+    if o.order == 2 and tris.size:  # the midpoint nodes come after every other vertex
+        ends, marks = edge_listing()
+        extra = midpoints(triangles, ends, verts, first=verts.shape[0], attributes=vattrs, edge_markers=marks)
+        triangles = extra.triangles
+        verts = np.vstack([verts, extra.vertices])
+        vmarks = np.concatenate([vmarks, extra.vertex_markers])
+        if vattrs is not None:
+            vattrs = np.vstack([vattrs, extra.vertex_attributes])
+
+    out = Result()
+    if not o.N:
+        _put(out, "vertices", verts)
+        if vattrs is not None:
+            _put(out, "vertex_attributes", vattrs)
+        if not o.B:
+            _put(out, "vertex_markers", _col(vmarks))
+    if not o.E:
+        _put(out, "triangles", triangles)
+        if o.A and arrays["attribute"].shape[0]:
+            _put(out, "triangle_attributes", arrays["attribute"][tris].reshape(-1, 1))
+    if (o.p or o.c) and not o.P:
+        constrained = listed_edges(corner, twin, seg, tris, tri_index, constrained=True)
+        # a subsegment made on triangle edge a -> b is listed b -> a (Triangle's order)
+        _put(out, "segments", ids(ends_of(corner, constrained)[:, ::-1]))
+        if not o.B:
+            _put(out, "segment_markers", _col(marker[seg[constrained]]))
+        if o.p:
+            for key in ("holes", "regions"):
+                if key in inp:
+                    _put(out, key, inp[key])
+    if o.e:
+        ends, marks = edge_listing()
+        _put(out, "edges", ends)
+        if not o.B:
+            _put(out, "edge_markers", _col(marks))
+    if o.n:
+        tw = twin.reshape(-1, 3)[tris]
+        nb = np.where(tw == NO_EDGE, -1, tri_index[np.maximum(tw, 0) // 3])
+        _put(out, "neighbors", nb.astype(np.int32))
+    return out
+
+
+def listed_edges(corner, twin, seg, tris, tri_index, *, constrained: bool = False) -> np.ndarray:
+    """Each edge once, as Triangle lists them: triangle by triangle, the edges
+    (c0, c1), (c1, c2), (c2, c0) -- our edges 2, 0, 1 -- taking an edge when
+    its neighbour is absent or comes later.  ``constrained``: subsegments only
+    (picked before the edge arrays are built: a few of millions)."""
+    if constrained:
+        rows, k = np.nonzero(seg.reshape(-1, 3)[tris][:, _LISTING] != NO_SEG)
+        e = 3 * tris[rows] + _LISTING[k]
+    else:
+        e = (3 * tris[:, None] + _LISTING).ravel()
+    tw = twin[e]
+    keep = (tw == NO_EDGE) | (tri_index[np.maximum(tw, 0) // 3] > tri_index[e // 3])
+    return e[keep]
+
+
+def ends_of(corner, e: np.ndarray) -> np.ndarray:
+    """(origin, destination) of the edges ``e``."""
+    nxt = np.where(e % 3 == 2, e - 2, e + 1)
+    prv = np.where(e % 3 == 0, e + 2, e - 1)
+    return np.stack([corner[nxt], corner[prv]], axis=1)

@@ -228,6 +228,33 @@ def set_parent(m: Mesh, v: Index, p0: Index, p1: Index, p2: Index, s: cython.dou
         m.parent[v, 4] = t
 
 
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def interpolate_attributes(m: Mesh, out: cython.double[:, ::1], first: Index) -> cython.void:
+    """Fill the attribute rows ``out[first:]`` of vertices the engine added,
+    each from its parents' rows as ``set_parent`` recorded them; a vertex
+    without a record (p0 < 0) keeps zeros.  Vertices come in creation order,
+    so parents are filled first."""
+    p0: Index
+    p1: Index
+    p2: Index
+    s: cython.double
+    t: cython.double
+    a0: cython.double
+    for v in range(first, out.shape[0]):
+        p0 = cython.cast(Index, m.parent[v, 0])
+        if p0 < 0:
+            continue
+        p1 = cython.cast(Index, m.parent[v, 1])
+        p2 = cython.cast(Index, m.parent[v, 2])
+        s = m.parent[v, 3]
+        t = m.parent[v, 4]
+        for k in range(out.shape[1]):
+            a0 = out[p0, k]
+            out[v, k] = a0 + s * (out[p1, k] - a0) + t * (out[p2, k] - a0)
+
+
 # ---------------------------------------------------------------- pure Python
 # The primitives of mesh.pxd, for the pure-Python mode (compiled, mesh.pxd's
 # inline definitions are used instead).
