@@ -9,7 +9,7 @@ from collections.abc import Callable
 import numpy as np
 
 from . import cdt, limits
-from . import refine as rf
+from . import refine_numba as rf
 from .errors import TriangleError
 from .mesh import S_NSLOT
 from .pslg import Mesher, _widen

@@ -45,7 +45,7 @@ import numpy as np
 
 from . import cdt, counters, quadratic
 from . import quality as ql
-from . import refine as rf
+from . import refine_numba as rf
 from .cdt import _edge
 from .driver import _assemble, _validate, mesh_input
 from .jit import kernel

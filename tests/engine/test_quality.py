@@ -138,7 +138,7 @@ def test_triangle_buckets_by_hand():
 
 def _queue(strategy: str, capacity: int = 64):
     """A refiner holding only a bad-triangle queue."""
-    from instrument import refine as rf
+    from instrument import refine_numba as rf
     from instrument.strategies import strategy_id
 
     z = np.zeros(0, dtype=np.int64)

@@ -1,4 +1,6 @@
-"""Ruppert's Delaunay refinement with Triangle's rules (kernels).
+"""(Transitional: the numba refinement kernels, until instrument/refine/ replaces them.)
+
+Ruppert's Delaunay refinement with Triangle's rules (kernels).
 
 The loop (Triangle's ``enforcequality``): split every encroached subsegment;
 queue every bad triangle; then repeatedly take the next bad triangle (the

@@ -1,0 +1,93 @@
+# cython: language_level=3
+"""Which bad triangle is split next: the strategies' priority keys.
+
+Every strategy (``instrument.strategies()`` names them) is one priority key
+per queued triangle (smaller is served first; ties go to the earlier
+entry), computed by ``priority`` when the triangle is queued, so the hot
+loop never calls back into Python.  A binary heap serves them, except
+Triangle's order, whose key is its bucket number negated: that one is
+served from 4096 FIFO lists, as Triangle does (queues.py), in the same
+order and in constant time.
+"""
+
+from __future__ import annotations
+
+import math
+
+import cython
+from cython.cimports.libc.math import frexp, sqrt
+
+_DBL_MAX = cython.declare(cython.double, 1.7976931348623157e308)
+
+if not cython.compiled:  # compiled, these are order.pxd's enum
+    TRIANGLE, WORST_ANGLE, FIFO, LIFO, RANDOM, LARGEST, SMALLEST, ADVERSARY = range(8)
+
+
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _frexp(x: cython.double) -> tuple[cython.double, cython.int]:
+    """x = mant * 2**ex with mant in [0.5, 1), for finite x > 0."""
+    if cython.compiled:
+        ex: cython.int = 0
+        mant: cython.double = frexp(x, cython.address(ex))
+        return mant, ex
+    else:
+        return math.frexp(x)
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def triangle_bucket(key: cython.double) -> cython.int:
+    """Triangle's bucket (0..4095) for a squared shortest edge ``key``.
+
+    ``L = key`` or ``1 / key``, whichever is at least 1, written ``2^e f`` with
+    ``f`` in (1, 2]; ``x = 2e + [f > sqrt 2]``; bucket ``2047 - x`` for
+    ``key >= 1`` and ``2048 + x`` below.  Higher buckets are served first.
+    """
+    if key <= 0.0 or key != key:
+        return 4095
+    big: cython.bint = key >= 1.0
+    length: cython.double = key if big else 1.0 / key
+    if not length <= _DBL_MAX:  # infinite
+        return 0 if big else 4095
+    # frexp: length = mant * 2**ex with mant in [0.5, 1); shift to f in (1, 2]
+    mant: cython.double
+    ex: cython.int
+    mant, ex = _frexp(length)
+    f: cython.double = 2.0 * mant
+    e: cython.int = ex - 1
+    if f == 1.0 and e > 0:  # exact power of two: f = 2, one exponent lower
+        f = 2.0
+        e -= 1
+    x: cython.int = 2 * e + (1 if f > sqrt(2.0) else 0)
+    if x > 2047:
+        x = 2047
+    return 2047 - x if big else 2048 + x
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def priority(
+    strategy: cython.int, min_edge2: cython.double, cos2_min_angle: cython.double, circumradius2: cython.double,
+    created_estimate: cython.longlong, seq: cython.longlong, rnd: cython.double,
+) -> cython.double:
+    """The queue key of a bad triangle (smaller first); ``seq`` breaks ties."""
+    if strategy == TRIANGLE:
+        return -cython.cast(cython.double, triangle_bucket(min_edge2))
+    if strategy == WORST_ANGLE:
+        return -cos2_min_angle
+    if strategy == FIFO:
+        return 0.0
+    if strategy == LIFO:
+        return -cython.cast(cython.double, seq)
+    if strategy == RANDOM:
+        return rnd
+    if strategy == LARGEST:
+        return -circumradius2
+    if strategy == SMALLEST:
+        return circumradius2
+    return -cython.cast(cython.double, created_estimate)  # ADVERSARY

@@ -1,0 +1,58 @@
+# Refinement's state (state.py): its configuration, and what the loop keeps between calls.
+from instrument.core.mesh cimport Index
+
+cdef class Config:
+    cdef public int strategy         # order.pxd's ids
+    cdef public bint diametral       # -D: diametral circles instead of lenses
+    cdef public int keep_segments    # -Y: 1 keeps boundary subsegments whole, 2 (-YY) all of them
+    cdef public bint fixed_area      # -a<A>: the bound max_area
+    cdef public double max_area
+    cdef public bint regional_area   # a bare -a: per-triangle bounds (Mesh.area_bound)
+    cdef public bint offcenter       # off-centers (Üngör's, as Triangle), else circumcenters
+    cdef public bint angle_test      # -q: the minimum-angle test is on
+    cdef public bint builtin_user    # -u without a Python test: Triangle's sample triunsuitable
+    cdef public double good_angle    # cos^2 of the minimum angle
+    cdef public double lens          # (2 cos^2 - 1)^2, the diametral lens test
+    cdef public double off_constant  # the off-center's distance from the shortest edge, over its length
+
+cdef class Refiner:
+    cdef public Config cfg
+    # the loop
+    cdef public int phase            # 0 split the input's encroached subsegments, 1 queue bad triangles, 2 main loop
+    cdef public long long budget     # Steiner points left, -1 = unlimited
+    cdef public Index current        # triangle being split, kept across a NEED_ROOM (-1 none)
+    cdef public long long current_stamp  # and its stamp when it was queued
+    cdef public double current_key   # and its queue key
+    cdef public Index taken          # bad triangles taken since the last PAUSE
+    cdef public Index need           # with NEED_ROOM: the triangles (and queue entries) one step needs
+    cdef public Index error_org      # with PRECISION: the subsegment's end vertices
+    cdef public Index error_dest
+    # the bad-triangle queue: a heap, or Triangle's buckets (queues.py)
+    cdef public double[::1] hkey     # key (smaller first)
+    cdef public long long[::1] hseq  # insertion number (ties); in the bucket log: the next entry
+    cdef public long long[::1] htri  # triangle slot
+    cdef public long long[::1] hstamp  # and its stamp when queued
+    cdef public long long[:, ::1] bucket  # (2, 4096) each bucket's first and last log entry, -1 empty
+    cdef public Index hsize          # entries queued
+    cdef public long long seq        # insertions so far
+    cdef public Index top_bucket     # the highest non-empty bucket, -1 none
+    cdef public Index log_length     # bucket log entries (live, served and stale)
+    cdef public Index compact_at     # compact the queue when it grows past this
+    # the encroached-subsegment pool (encroach.py)
+    cdef public long long[:, ::1] enc  # (E, 4): ends (-1: free slot), edge, its triangle's stamp
+    cdef public Index enc_live       # records in the pool
+    cdef public Index enc_fresh      # slots ever used
+    cdef public Index enc_free       # last freed slot, -1 none (freed slots chain through column 1)
+    cdef public Index enc_cursor     # the slot the current pass is at
+    cdef public bint enc_busy        # a pass is under way (resume at enc_cursor)
+    # scratch of one insertion (cavity.py)
+    cdef public long long[::1] cav   # cavity triangles (and, from the end, those tested outside)
+    cdef public long long[::1] fan   # the triangles an insertion made
+    cdef public long long[:, ::1] bnd  # cavity rim edges: (outer twin, org, dest, record, edge)
+    cdef public double[:, ::1] bval  # and the area bound and attribute each passes on
+    # the trace (empty: off)
+    cdef public long long[:, ::1] trace  # rows: kind, created, deleted, walk steps, queue length
+    cdef public Index ntrace
+
+cpdef bint trace_full(Refiner r) noexcept nogil
+cpdef void trace_row(Refiner r, long long kind, long long created, long long deleted, long long steps, long long queue) noexcept nogil

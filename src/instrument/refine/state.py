@@ -1,0 +1,122 @@
+# cython: language_level=3
+"""Refinement's state: its configuration, and what the loop keeps between calls.
+
+``Config`` is fixed when the run starts (switches, strategy, Steiner
+points); ``Refiner`` is everything the loop changes: where it is, the
+bad-triangle queue, the encroached-subsegment pool, an insertion's scratch
+and the trace.  The kernel stops whenever an array is full and resumes
+after the driver (``refine/__init__.py``) has grown it, so all of it lives
+here, by name, rather than in the kernel's locals.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+import cython
+from cython.cimports.instrument.core.mesh import Index
+
+from .order import TRIANGLE
+
+#: Triangle's bucket queue has this many FIFO lists.
+NBUCKETS = 4096
+
+#: Trace rows' kinds.
+T_SEGMENT, T_CIRCUMCENTER, T_OFFCENTER, T_REJECTED, T_DELETED = range(5)
+TRACE_KINDS = ("segment", "circumcenter", "offcenter", "rejected", "deleted")
+
+
+@cython.cclass
+class Config:
+    """What the switches and options ask of a run (see state.pxd for each field)."""
+
+    def __init__(self, o, strategy: int, offcenter: bool, python_test: bool):
+        theta = math.radians(o.min_angle) if o.q else 0.0
+        good = math.cos(theta) ** 2
+        self.strategy = strategy
+        self.diametral = o.D
+        self.keep_segments = o.Y
+        self.fixed_area = o.max_area > 0
+        self.max_area = o.max_area
+        self.regional_area = o.var_area
+        self.offcenter = offcenter
+        self.angle_test = o.q and o.min_angle > 0
+        self.builtin_user = o.u and not python_test  # a Python test runs between kernel rounds instead
+        self.good_angle = good
+        self.lens = (2.0 * good - 1.0) ** 2
+        # the off-center sits at 0.95 of the distance where the edge subtends theta
+        self.off_constant = 0.475 * math.sqrt((1.0 + math.cos(theta)) / (1.0 - math.cos(theta))) if theta > 0 else 0.0
+
+
+@cython.cclass
+class Refiner:
+    """The refinement loop's state (see state.pxd for each field)."""
+
+    def __init__(self, cfg: Config, *, budget: int, slots: int, queue: int, records: int, trace: bool):
+        self.cfg = cfg
+        self.phase = 0
+        self.budget = budget
+        self.current = -1
+        self.current_stamp = 0
+        self.current_key = 0.0
+        self.taken = 0
+        self.need = 0
+        self.error_org = -1
+        self.error_dest = -1
+        self.hkey = np.zeros(queue)
+        self.hseq = np.zeros(queue, dtype=np.int64)
+        self.htri = np.zeros(queue, dtype=np.int64)
+        self.hstamp = np.zeros(queue, dtype=np.int64)
+        self.bucket = np.full((2, NBUCKETS), -1, dtype=np.int64)
+        self.hsize = 0
+        self.seq = 0
+        self.top_bucket = -1
+        self.log_length = 0
+        self.compact_at = 0
+        self.enc = np.zeros((records, 4), dtype=np.int64)
+        self.enc_live = 0
+        self.enc_fresh = 0
+        self.enc_free = -1
+        self.enc_cursor = 0
+        self.enc_busy = False
+        self.cav = np.zeros(slots, dtype=np.int64)
+        self.fan = np.zeros(slots, dtype=np.int64)
+        self.bnd = np.zeros((slots, 5), dtype=np.int64)
+        self.bval = np.zeros((slots, 2))
+        self.trace = np.zeros((1024 if trace else 0, 5), dtype=np.int64)
+        self.ntrace = 0
+
+    @property
+    def bucketed(self) -> bool:
+        return self.cfg.strategy == TRIANGLE
+
+    def queue_capacity(self) -> int:
+        return self.hkey.shape[0]
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def trace_full(r: Refiner) -> cython.bint:
+    """The trace (if on) lacks room for the rows one more step may write."""
+    return r.trace.shape[0] > 0 and r.ntrace + 64 > r.trace.shape[0]
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def trace_row(
+    r: Refiner, kind: cython.longlong, created: cython.longlong, deleted: cython.longlong,
+    steps: cython.longlong, queue: cython.longlong,
+) -> cython.void:
+    """Append a trace row (if the trace is on)."""
+    i: Index = r.ntrace
+    if i < r.trace.shape[0]:
+        r.trace[i, 0] = kind
+        r.trace[i, 1] = created
+        r.trace[i, 2] = deleted
+        r.trace[i, 3] = steps
+        r.trace[i, 4] = queue
+        r.ntrace = i + 1
