@@ -14,7 +14,6 @@ import argparse
 import contextlib
 import csv
 import dataclasses
-import inspect
 import io
 import json
 import os
@@ -182,8 +181,8 @@ CHECK_TEXT = {
     "count": "  !! !! !! !! Precisely {} problem{} found.",
 }
 
-#: Header of a --trace file when the engine returned no trace.
-TRACE_HEADER = ("step", "kind", "x", "y", "triangles_created")
+#: Header of a --trace file when the engine returned no trace (no refinement ran).
+TRACE_HEADER = ("kind", "created", "deleted", "walk_steps", "queue_length")
 
 
 #: meshio formats whose extension meshio's table does not give.
@@ -457,16 +456,10 @@ def _write_extras(long, formats, outbase: str, mesh, result, o, say, warn) -> No
 def _engine_kwargs(long: argparse.Namespace) -> dict[str, Any]:
     import instrument
 
-    kwargs: dict[str, Any] = {"strategy": long.strategy, "seed": long.seed}
-    listing = getattr(instrument, "strategies", None)
-    if callable(listing):
-        names = list(listing())
-        if names and long.strategy not in names:
-            raise CliError(f"Unknown strategy {long.strategy!r}; choose from {', '.join(names)}.")
-    if long.steiner != "offcenter":
-        if "steiner" not in inspect.signature(instrument.triangulate).parameters:
-            raise CliError(f"--steiner {long.steiner} is not supported by the engine yet.")
-        kwargs["steiner"] = long.steiner
+    kwargs: dict[str, Any] = {"strategy": long.strategy, "seed": long.seed, "steiner": long.steiner}
+    names = list(instrument.strategies())
+    if long.strategy not in names:
+        raise CliError(f"Unknown strategy {long.strategy!r}; choose from {', '.join(names)}.")
     if long.trace:
         kwargs["trace"] = True
     if long.max_vertices is not None:
@@ -719,8 +712,10 @@ def _meshio_formats(requested: list[str]) -> list[tuple[str, str, str | None]]:
     if not any(f.strip() for value in requested for f in value.split(",")):
         return []  # without --format meshio stays unloaded (a tenth of the command's start-up)
     import meshio
-    from meshio import _helpers
 
+    # meshio names its formats only through its extension table (public);
+    # a format in it that meshio cannot write fails at the write, as a CliError
+    known = sorted({f for fmts in meshio.extension_to_filetypes.values() for f in fmts} | set(FORMAT_EXTENSIONS))
     chosen = []
     for fmt in (f.strip() for value in requested for f in value.split(",")):
         if not fmt:
@@ -730,9 +725,8 @@ def _meshio_formats(requested: list[str]) -> list[tuple[str, str, str | None]]:
             note = ("Warning:  meshio's format 'msh' is ANSYS; writing Gmsh 2.2 "
                     "('gmsh22') instead.")
             fmt = "gmsh22"
-        if fmt not in _helpers._writer_map:
-            known = ", ".join(sorted(_helpers._writer_map))
-            raise CliError(f"Unknown output format {fmt!r}; meshio writes {known}.")
+        if fmt not in known:
+            raise CliError(f"Unknown output format {fmt!r}; meshio knows {', '.join(known)}.")
         ext = FORMAT_EXTENSIONS.get(fmt)
         if ext is None:
             ext = next(
@@ -767,43 +761,11 @@ def _write_file(path: str, text: str) -> None:
         raise CliError(f"Cannot create file {exc.filename or path}.") from None
 
 
-def _trace_table(trace) -> tuple[list[str], list[list[Any]]]:
-    """Header and rows of a trace, whatever tabular shape the engine gives."""
-    if trace is None:
-        return list(TRACE_HEADER), []
-    if isinstance(trace, np.ndarray):
-        if trace.dtype.names:
-            return list(trace.dtype.names), [list(r) for r in trace.tolist()]
-        a = trace.reshape(len(trace), -1)
-        return [f"col{i}" for i in range(a.shape[1])], a.tolist()
-    if isinstance(trace, Mapping):  # columns
-        header = list(trace)
-        cols = [np.asarray(trace[k]).tolist() for k in header]
-        return header, [list(r) for r in zip(*cols)]
-    rows = list(trace)
-    if not rows:
-        return list(TRACE_HEADER), []
-    first = rows[0]
-    if isinstance(first, Mapping):
-        header = list(first)
-        return header, [[r.get(k) for k in header] for r in rows]
-    if dataclasses.is_dataclass(first):
-        header = [f.name for f in dataclasses.fields(first)]
-        return header, [[getattr(r, k) for k in header] for r in rows]
-    if hasattr(first, "_fields"):
-        return list(first._fields), [list(r) for r in rows]
-    rows = [list(r) if isinstance(r, (list, tuple, np.ndarray)) else [r] for r in rows]
-    return [f"col{i}" for i in range(len(rows[0]))], rows
-
-
 def _write_trace(path: str, trace) -> None:
-    if hasattr(trace, "to_csv"):  # a DataFrame
-        try:
-            trace.to_csv(path, index=False)
-            return
-        except OSError as exc:
-            raise CliError(f"Cannot create file {exc.filename or path}.") from None
-    header, rows = _trace_table(trace)
+    """One CSV row per insertion attempt: the engine's trace (a structured
+    array), or just the header when the run inserted nothing."""
+    header = TRACE_HEADER if trace is None else trace.dtype.names
+    rows = [] if trace is None else trace.tolist()
     try:
         with open(path, "w", newline="") as f:
             w = csv.writer(f)

@@ -1,11 +1,10 @@
-"""Fixtures for the command-line tests: input copies and a stand-in engine."""
+"""Fixtures for the command-line tests: input copies and a record of the engine calls."""
 
 from __future__ import annotations
 
 import shutil
 
 import pytest
-import triangle
 from clihelpers import TRIANGLE_DATA
 
 
@@ -19,22 +18,17 @@ def workdir(tmp_path, monkeypatch):
 
 
 @pytest.fixture
-def triangle_engine(monkeypatch):
-    """Replace ``instrument.triangulate`` by Triangle itself (the `triangle` wheel).
-
-    Lets the whole command line run on switches our engine does not handle yet
-    (p, q, a, r).  Returns the list of (input dict, opts, kwargs) of every call.
-    """
+def engine_calls(monkeypatch):
+    """Record every call the command makes to ``instrument.triangulate`` (the
+    real engine still runs): a list of (input dict, opts, kwargs)."""
     import instrument
-    from instrument import Result
 
     calls = []
+    real = instrument.triangulate
 
-    def fake(tri, opts="", **kwargs):
+    def spy(tri, opts="", **kwargs):
         calls.append((tri, opts, kwargs))
-        result = Result(triangle.triangulate(tri, opts))
-        result.work = {"triangles_created": 7, "incircle_tests": 5, "orient_tests": 3}
-        return result
+        return real(tri, opts, **kwargs)
 
-    monkeypatch.setattr(instrument, "triangulate", fake)
+    monkeypatch.setattr(instrument, "triangulate", spy)
     return calls
