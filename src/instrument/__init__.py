@@ -14,12 +14,12 @@ from .core import predicates as _predicates  # noqa: E402  (the kernels must be 
 purepython.require_compiled(_predicates)
 
 from .compat import convex_hull, delaunay, voronoi
-from .driver import triangulate
+from .pipeline import triangulate
 from .errors import SizeLimitError, TriangleError
 from .output import Result
 from .plot import compare, comparev, plot, work
 from .samples import get_data, load, loads, show_data
-from .strategies import strategies
+from .refine.order import strategies
 
 try:  # the distribution's version, as the package's ``__version__`` is its own
     __version__ = version("ruppert")

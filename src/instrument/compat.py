@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .driver import triangulate
+from .pipeline import triangulate
 from .voronoi import diagram
 
 __all__ = ["convex_hull", "delaunay", "voronoi"]

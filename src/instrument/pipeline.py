@@ -14,14 +14,164 @@ triangles (reconstruct/).  Every stage works on one ``MeshState``
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 
-from .delaunay import delaunay
+from . import counters, limits, refine, statistics
 from .carve import carve
 from .core.subsegments import Subsegments
+from .delaunay import delaunay
+from .errors import TriangleError
+from .output import Result, assemble
+from .reconstruct import make_delaunay, reconstruct
 from .segments import clean_segments, enclose_hull, recover_segments
 from .state import MeshState
-from .switches import Options
+from .refine.order import strategy_id
+from .switches import Options, parse
+
+INPUT_KEYS = frozenset(
+    {
+        "vertices",
+        "vertex_markers",
+        "vertex_attributes",
+        "segments",
+        "segment_markers",
+        "holes",
+        "regions",
+        "triangles",
+        "triangle_attributes",
+        "triangle_max_area",
+        "neighbors",
+        "edges",
+        "edge_markers",
+        "triangle_neighbors",  # what the package's ``load`` names a .neigh file's array; ignored, as neighbors are
+    }
+)
+
+
+def triangulate(
+    tri: dict,
+    opts: str = "",
+    *,
+    strategy: str = "triangle",
+    seed: int = 0,
+    trace: bool = False,
+    steiner: str = "offcenter",
+    triunsuitable=None,
+    max_vertices: int | None = None,
+    progress=None,
+) -> Result:
+    """Triangulate, mesh or refine ``tri`` (the `triangle` package's dict) under
+    Triangle's switches ``opts`` (library rules: no dash, 0-based indices).
+
+    Returns a ``Result`` (a dict with the `triangle` package's keys) whose
+    ``work`` attribute holds the work counters and ``warnings`` Triangle's
+    warnings (duplicate vertices, invalid segments).  ``strategy`` picks the
+    next bad triangle (``instrument.strategies()``); ``steiner`` is
+    "offcenter" (Triangle's) or "circumcenter" (Ruppert's original points).
+    ``triunsuitable(org, dest, apex, area) -> bool`` replaces Triangle's
+    built-in size test for the ``u`` switch (``u`` without it uses the
+    built-in one, as the `triangle` package does).  ``trace=True`` records
+    one row per insertion attempt in ``result.trace``.
+
+    Refinement stops with ``SizeLimitError`` (a ``TriangleError``) when the
+    mesh passes ``max_vertices`` (default: derived from the input's size and
+    area bound, see ``instrument.limits``) instead of running out of memory;
+    a minimum angle above 34 degrees adds a warning to ``warnings``.
+    ``progress(vertices, limit)`` is called now and then during refinement.
+    With ``V`` (and no ``Q``) the statistics are printed to stdout, as
+    Triangle's library mode does.
+    """
+    o = parse(opts)
+    inp = validate(tri, o)
+    strategy_id(strategy)  # reject unknown names before any work
+    work = counters.new_work()
+    attrs = None
+    if o.r:  # the given triangles, as they are
+        ms, inp, attrs = reconstruct(tri, inp, o, work, seed)
+    else:
+        ms = mesh_input(inp, o, work, seed)
+    refining = o.quality and ms.mesh.nlive > 0
+    if refining and o.r:
+        make_delaunay(ms)  # Bowyer-Watson needs a Delaunay mesh
+    rows = None
+    if refining:
+        warning = limits.angle_warning(o.min_angle) if o.q else None
+        if warning:
+            ms.warnings.append(warning)
+        rows = refine.run(
+            ms, o, strategy=strategy, steiner=steiner, trace=trace, triunsuitable=triunsuitable,
+            max_vertices=max_vertices, progress=progress,
+        )
+    # with r, -j leaves out only undead vertices (duplicates, eaten ones),
+    # which reconstruction never makes: unused input vertices stay, as in Triangle
+    result = assemble(ms, inp, dataclasses.replace(o, j=False) if o.r else o)
+    if attrs is not None and not o.E and "triangles" in result:
+        ancestor = np.asarray(ms.mesh.attribute)[ms.mesh.live_triangles()].astype(np.int64)
+        result["triangle_attributes"] = np.ascontiguousarray(attrs[ancestor])
+    if trace:
+        result.trace = rows if rows is not None else np.zeros(0, dtype=refine.TRACE_DTYPE)
+    result.work = counters.as_dict(work)
+    result.warnings = ms.warnings
+    if o.V and not o.Q:
+        statistics.emit(statistics.library_report(tri, o, result, warnings=result.warnings))
+    return result
+
+
+def _rows(tri: dict, key: str, cols: int, dtype) -> np.ndarray | None:
+    if tri.get(key) is None:
+        return None
+    a = np.asarray(tri[key], dtype=dtype)
+    if a.size == 0:
+        return np.zeros((0, cols), dtype=dtype)
+    if a.ndim != 2 or a.shape[1] != cols:
+        raise TriangleError(f"{key} must have shape (N, {cols}), not {a.shape}")
+    return np.ascontiguousarray(a)
+
+
+def _column(tri: dict, key: str, n: int, dtype) -> np.ndarray | None:
+    if tri.get(key) is None:
+        return None
+    a = np.asarray(tri[key], dtype=dtype).reshape(-1)
+    if a.shape[0] != n:
+        raise TriangleError(f"{key} has {a.shape[0]} entries for {n} rows")
+    return a.copy()
+
+
+def validate(tri: dict, o: Options) -> dict:
+    """The input arrays ``triangulate`` uses, checked and converted (vertices,
+    markers, attributes; with ``p`` segments, holes and regions)."""
+    unknown = set(tri) - INPUT_KEYS
+    if unknown:
+        raise KeyError(f"unknown input key(s): {', '.join(sorted(map(str, unknown)))}")
+    xy = np.asarray(tri.get("vertices", []), dtype=np.float64)
+    if xy.size == 0 or xy.reshape(-1, 2).shape[0] < 3:
+        raise TriangleError("Input must have at least three vertices.")
+    xy = _rows(tri, "vertices", 2, np.float64)
+    if not np.isfinite(xy).all():
+        bad = int(np.flatnonzero(~np.isfinite(xy).all(axis=1))[0])
+        raise TriangleError(f"vertex {bad} has a coordinate that is not finite: {tuple(xy[bad])}")
+    n = xy.shape[0]
+    out = {"vertices": xy}
+    vm = _column(tri, "vertex_markers", n, np.int32)
+    out["vertex_markers"] = vm if vm is not None else np.zeros(n, dtype=np.int32)
+    va = tri.get("vertex_attributes")
+    if va is not None and np.asarray(va).size:
+        va = np.asarray(va, dtype=np.float64).reshape(n, -1)
+        out["vertex_attributes"] = np.ascontiguousarray(va)
+    if o.p:
+        segs = _rows(tri, "segments", 2, np.int64)
+        out["segments"] = segs if segs is not None else np.zeros((0, 2), dtype=np.int64)
+        sm = _column(tri, "segment_markers", out["segments"].shape[0], np.int32)
+        out["segment_markers"] = sm if sm is not None else np.zeros(out["segments"].shape[0], dtype=np.int32)
+        for key in ("holes", "regions"):
+            arr = _rows(tri, key, 2 if key == "holes" else 4, np.float64)
+            if arr is not None and len(arr):
+                if not np.isfinite(arr[:, :2]).all():
+                    raise TriangleError(f"{key} must have finite coordinates")
+                out[key] = arr
+    return out
 
 
 def mesh_input(inp: dict, o: Options, work: np.ndarray, seed: int = 0) -> MeshState:

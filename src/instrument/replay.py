@@ -8,7 +8,7 @@ lets a strategy finish the refinement:
 
 1. the pipeline of ``triangulate(example(n), "pq<alpha>")`` up to the
    refinement: Delaunay triangulation, the eight box subsegments, the
-   refinement state (``quality.new_refiner``), the encroachment tally
+   refinement state (``refine.new_refiner``), the encroachment tally
    (which must find nothing: Theorem 3's proof);
 2. the scripted phase: for k = 0, 1, ..., find Δ_k = (C, D, P_k) in the mesh
    and split it with the engine's own ``split_bad_triangle`` (walk, cavity,
@@ -43,14 +43,15 @@ import math
 
 import numpy as np
 
-from . import cdt, counters, quadratic
-from . import quality as ql
-from . import refine_numba as rf
-from .cdt import _edge
-from .driver import _assemble, _validate, mesh_input
-from .jit import kernel
-from .mesh import S_NSLOT, S_NVERT
-from .strategies import FIFO, strategy_id
+from . import counters, quadratic, refine
+from .core.navigate import build_vertex_edges, find_edge
+from .core.status import NEED_ROOM
+from .output import assemble
+from .pipeline import mesh_input, validate
+from .refine.order import FIFO
+from .refine.queues import queue_clear
+from .refine.splits import split_bad_triangle, tally_encroached
+from .refine.order import strategy_id
 from .switches import parse
 
 __all__ = ["ReplayError", "replay"]
@@ -66,27 +67,33 @@ class ReplayError(RuntimeError):
     """The mesh departs from Barbič and Miller's Lemma 1, Lemma 2 or Theorem 3."""
 
 
-@kernel
-def scripted_split(r, m, segs, vmark, parent, vtri, work, look, look_state, c, d, p, state):
+def scripted_split(r, ms, look: np.ndarray, look_rng: list[int], c: int, d: int, p: int) -> int:
     """Split triangle (c, d, p) with Ruppert's rule, as the refinement loop
     splits a bad triangle.  Returns ``NOT_FOUND`` if no live triangle has the
     edge c -> d with apex p, else ``split_bad_triangle``'s status (DONE, or
     NEED_ROOM: nothing changed).
 
-    The look-up counts into ``look`` / ``look_state``, not ``work``.  The
-    bad-triangle heap is emptied first: the scripted phase never serves it,
-    and the finishing phase re-tallies every triangle."""
-    e = _edge(m, look, vtri, c, d, look_state)
-    status = NOT_FOUND
-    if e >= 0 and m.corner[e] == p:
-        rf.queue_clear(r)
-        # computed from the handle with origin at the slot's corner 0 (the
-        # new vertex for a triangle an insertion made): I(n) is full of
-        # cocircular trapezoids, so P_k's last bits decide Delaunay ties,
-        # and this rounding is the one tests/engine/test_replay.py checks
-        # step by step against Triangle's triangulation from scratch
-        status = rf.split_bad_triangle(r, m, segs, vmark, parent, vtri, work, 3 * (e // 3) + 2, state)
-    return status
+    The look-up counts into ``look`` and walks with its own generator
+    (``look_rng[0]``), not the run's.  The bad-triangle queue is emptied
+    first: the scripted phase never serves it, and the finishing phase
+    re-tallies every triangle."""
+    m = ms.mesh
+    work, rng = m.work, m.rng
+    m.work, m.rng = look, look_rng[0]
+    try:
+        e = find_edge(m, c, d)
+    finally:
+        look_rng[0] = m.rng
+        m.work, m.rng = work, rng
+    if e < 0 or m.corner[e] != p:
+        return NOT_FOUND
+    queue_clear(r)
+    # computed from the handle with origin at the slot's corner 0 (the
+    # new vertex for a triangle an insertion made): I(n) is full of
+    # cocircular trapezoids, so P_k's last bits decide Delaunay ties,
+    # and this rounding is the one tests/engine/test_replay.py checks
+    # step by step against Triangle's triangulation from scratch
+    return split_bad_triangle(r, m, ms.segs, 3 * (e // 3) + 2)
 
 
 def _angles(xy: np.ndarray) -> np.ndarray:
@@ -119,9 +126,7 @@ def _broom_missing(fan_corners: np.ndarray, apex: int, lo: int, n: int) -> np.nd
 
 
 def _live_corners(m) -> np.ndarray:
-    slots = int(m.size[S_NSLOT])
-    c = m.corner[: 3 * slots].reshape(-1, 3)[m.stamp[:slots] > 0]
-    return c[(c >= 0).all(axis=1)]
+    return np.asarray(m.corner).reshape(-1, 3)[m.live_triangles()]
 
 
 def _apex_first(c: np.ndarray, apex: int) -> np.ndarray:
@@ -164,8 +169,8 @@ def replay(
     p = quadratic.params(n, alpha_deg)
     if then is not None:
         strategy_id(then)
-    if steiner not in ql.STEINER:
-        raise ValueError(f"steiner must be one of {', '.join(ql.STEINER)}, not {steiner!r}")
+    if steiner not in refine.STEINER:
+        raise ValueError(f"steiner must be one of {', '.join(refine.STEINER)}, not {steiner!r}")
     total = p.steps
     if stop_after is not None:
         stop_after = quadratic._integer(stop_after, "stop_after")
@@ -175,40 +180,41 @@ def replay(
 
     o = parse(f"pq{float(alpha_deg)!r}")
     tri = quadratic.example(n, alpha_deg)
-    inp = _validate(tri, o)
+    inp = validate(tri, o)
     work = counters.new_work()
     ms = mesh_input(inp, o, work, seed)
-    if int(ms.m.size[S_NVERT]) != n + 12 or int(work[counters.C_STEINER]):
+    if ms.n_vertices != n + 12 or int(work[counters.C_STEINER]):
         raise ReplayError("the extended input did not triangulate to its own n + 12 vertices")
 
-    r = ql.new_refiner(ms, o, then or "fifo", "circumcenter", False)
-    r.ipar[rf.I_STRATEGY] = FIFO  # cheap keys while the heap is unused
-    cdt.build_vertex_edges(ms.m, ms.vtri)
-    rf.tally_encroached(r, ms.m, ms.segs)
-    if rf._enc_len(r):
+    r = refine.new_refiner(ms, o, then or "fifo", "circumcenter", False)
+    r.cfg.strategy = FIFO  # cheap keys while the queue is unused
+    build_vertex_edges(ms.mesh)
+    tally_encroached(r, ms.mesh, ms.segs)
+    if r.enc_live:
         raise ReplayError("a box subsegment is encroached in the extended input (Theorem 3: none is)")
     setup = work.copy()
 
     # Lemma 2, k = 0: the broom of P_0 is in the initial triangulation
     apex0 = quadratic.apex_index(n, 0)
-    corners = _apex_first(_live_corners(ms.m), apex0)
+    corners = _apex_first(_live_corners(ms.mesh), apex0)
     missing = _broom_missing(corners, apex0, 0, n)
     if missing.size:
         raise ReplayError(f"Lemma 2 (k = 0): triangle ({missing[0]}, {missing[0] + 1}, P_0) is not in the initial mesh")
 
     look = counters.new_work()
-    look_state = np.array([12345], dtype=np.int64)
+    look_rng = [12345]
     steps = np.zeros(total, dtype=np.int64)
 
     def xy_bottom(i: int) -> tuple[float, float]:
         return (i / n, 0.0)
 
-    first = int(ms.m.size[S_NVERT])  # P_1's index
+    first = ms.n_vertices  # P_1's index
     for k in range(total):
         c, d, apex = quadratic.delta(n, k, alpha_deg, first_steiner=first)
-        m = ms.m
+        m = ms.mesh
+        xy = np.asarray(m.xy)
         # Lemma 1: Δ_k is skinny, its angle at P_k is θ
-        tri_xy = np.array([xy_bottom(c), xy_bottom(d), m.xy[apex]])
+        tri_xy = np.array([xy_bottom(c), xy_bottom(d), xy[apex]])
         ang = _angles(tri_xy)
         # (for r = 1 the angle at D is θ too: Δ_k is isosceles)
         smallest = ang[2] <= ang.min() * (1.0 + RTOL)
@@ -219,29 +225,27 @@ def replay(
         created0 = int(work[counters.C_CREATED])
         steiner0 = int(work[counters.C_STEINER])
         while True:
-            status = scripted_split(
-                r, ms.m, ms.segs, ms.vmark, ms.parent, ms.vtri, work, look, look_state, c, d, apex, ms.state
-            )
-            if status != rf.NEED_ROOM:
+            status = scripted_split(r, ms, look, look_rng, c, d, apex)
+            if status != NEED_ROOM:
                 break
-            r = ql.grow_refiner(ms, r)
+            refine.grow_refiner(ms, r)
         if status == NOT_FOUND:
             raise ReplayError(f"Lemma 2, step {k}: Delta_{k} = ({c}, {d}, P_{k}) is not in the mesh")
-        m = ms.m
+        xy = np.asarray(m.xy)
         nb = int(work[counters.C_CREATED]) - created0
-        v = int(m.size[S_NVERT]) - 1
+        v = m.nvert - 1
         if int(work[counters.C_STEINER]) != steiner0 + 1 or v != first + k:
             raise ReplayError(f"step {k}: the circumcenter of Delta_{k} was not inserted (rejected or a duplicate)")
-        if rf._enc_len(r):
+        if r.enc_live:
             raise ReplayError(f"step {k}: P_{k + 1} encroaches a box subsegment (Theorem 3: it cannot)")
         steps[k] = nb
         # Lemma 1: the new point is S = ((k+1) r/n + 1/(2n), h), and CDS is congruent to ABP
         want = quadratic.new_point(n, k, alpha_deg)
-        if not _close(m.xy[v], want, 1.0 / n):
-            raise ReplayError(f"Lemma 1, step {k}: the circumcenter is {tuple(m.xy[v])}, not {want}")
-        fan = _apex_first(m.corner.reshape(-1, 3)[r.fan[:nb]], v)
-        cds = np.array([xy_bottom(c), xy_bottom(d), m.xy[v]])
-        abp = np.array([xy_bottom(k * p.r), xy_bottom(k * p.r + 1), m.xy[apex]])
+        if not _close(xy[v], want, 1.0 / n):
+            raise ReplayError(f"Lemma 1, step {k}: the circumcenter is {tuple(xy[v])}, not {want}")
+        fan = _apex_first(np.asarray(m.corner).reshape(-1, 3)[np.asarray(r.fan)[:nb]], v)
+        cds = np.array([xy_bottom(c), xy_bottom(d), xy[v]])
+        abp = np.array([xy_bottom(k * p.r), xy_bottom(k * p.r + 1), xy[apex]])
         if not _close(_sides(cds), _sides(abp), 1.0 / n):
             raise ReplayError(f"Lemma 1, step {k}: CDS {_sides(cds)} is not congruent to ABP {_sides(abp)}")
         # Lemma 2: the broom of P_{k+1} (CDS is its first triangle) was created by this step
@@ -253,11 +257,11 @@ def replay(
     scripted = work - setup
 
     if then is not None:
-        r.ipar[rf.I_STRATEGY] = strategy_id(then)
-        r.ipar[rf.I_OFFCENTER] = int(steiner == "offcenter")
-        rf.queue_clear(r)
-        ql.finish(ms, r)  # the engine's refinement loop from where the script left it
-    result = _assemble(ms, inp, o)
+        r.cfg.strategy = strategy_id(then)
+        r.cfg.offcenter = steiner == "offcenter"
+        queue_clear(r)
+        refine.finish(ms, r)  # the engine's refinement loop from where the script left it
+    result = assemble(ms, inp, o)
     result.work = counters.as_dict(work)
     result.steps = steps
     result.scripted_work = counters.as_dict(scripted)

@@ -513,7 +513,7 @@ def engine_switches(o) -> str:
 
 def _triangulate(data, o, long, kwargs, quiet):
     import instrument
-    from instrument.driver import INPUT_KEYS
+    from instrument.pipeline import INPUT_KEYS
 
     tri = {}
     for key in sorted(INPUT_KEYS):

@@ -317,7 +317,7 @@ def test_overflowing_switch_values(opts):
 def test_error_classes():
     assert issubclass(TriangleError, ValueError) and issubclass(TriangleError, RuntimeError)
     assert issubclass(SizeLimitError, TriangleError)
-    from instrument.quality import PrecisionError
+    from instrument.refine import PrecisionError
     from instrument.switches import SwitchError
 
     assert issubclass(SwitchError, TriangleError) and issubclass(PrecisionError, TriangleError)

@@ -14,7 +14,7 @@ from hypothesis import strategies as st
 import instrument
 import ruppert_io
 from instrument.check import check_mesh, mesh_area
-from instrument.driver import INPUT_KEYS
+from instrument.pipeline import INPUT_KEYS
 
 SHARED = Path(__file__).resolve().parents[3] / "shared"
 CORPUS = SHARED / "corpus"

@@ -8,7 +8,7 @@ import triangle
 
 import instrument
 from instrument.check import check_mesh, mesh_area
-from instrument.strategies import triangle_bucket
+from instrument.refine.order import triangle_bucket
 
 POLYS = ["A", "box", "face", "la", "double_hex", "double_hex2", "double_hex3", "square_circle_hole"]
 
@@ -137,44 +137,39 @@ def test_triangle_buckets_by_hand():
 
 
 def _queue(strategy: str, capacity: int = 64):
-    """A refiner holding only a bad-triangle queue."""
-    from instrument import refine_numba as rf
-    from instrument.strategies import strategy_id
+    """A refiner holding only a bad-triangle queue, and a mesh of 16 slots."""
+    from instrument.core.mesh import Mesh
+    from instrument.refine.order import strategy_id
+    from instrument.refine.state import Config, Refiner
+    from instrument.switches import parse
 
-    z = np.zeros(0, dtype=np.int64)
-    ipar = np.zeros(rf.I_NPAR, dtype=np.int64)
-    ipar[rf.I_STRATEGY] = strategy_id(strategy)
-    r = rf.Refiner(
-        ipar=ipar, par=np.zeros(rf.P_NPAR), vtype=np.zeros(0, dtype=np.int8), area=np.zeros(0), attr=np.zeros(0),
-        hkey=np.zeros(capacity), hseq=np.zeros(capacity, dtype=np.int64), htri=np.zeros(capacity, dtype=np.int64),
-        hstamp=np.zeros(capacity, dtype=np.int64), bucket=np.zeros((2, rf.NBUCKETS), dtype=np.int64),
-        enc=np.zeros((0, 4), dtype=np.int64), cav=z, fan=z, seen=np.zeros(0, dtype=np.int8),
-        bnd=np.zeros((0, 5), dtype=np.int64), bval=np.zeros((0, 2)), vslot=z, trace=np.zeros((0, 5), dtype=np.int64),
-    )
-    rf.queue_clear(r)
-    return rf, r
+    cfg = Config(parse("q"), strategy_id(strategy), True, False)
+    r = Refiner(cfg, budget=-1, slots=0, queue=capacity, records=0, trace=False)
+    return r, Mesh(np.zeros((3, 2)), 16)
 
 
 @pytest.mark.parametrize("strategy", ["triangle", "fifo"])
 def test_bucket_queue_serves_finest_first_fifo_within_and_compacts_in_order(strategy):
     # Triangle's queue (spec 4.8.4): squared shortest edges 1.3 and 1.0 share
     # bucket 2047, 0.5 is in 2049, 0.25 in 2051; the highest bucket goes first.
-    from collections import namedtuple
+    from instrument.refine.queues import queue_compact, queue_pop, queue_push, queue_used
 
-    rf, r = _queue(strategy)
+    r, m = _queue(strategy)
+    stamp = np.asarray(m.stamp)
     keys = [1.3, 0.5, 1.0, 0.25, 0.5, 2.0, 0.25]
     for t, key in enumerate(keys):
-        rf.heap_push(r, -float(triangle_bucket(key)) if strategy == "triangle" else 0.0, t, 1)
+        queue_push(r, -float(triangle_bucket(key)) if strategy == "triangle" else 0.0, t, 1)
     # triangles 4 and 0 die: compaction must drop them and keep the order of the rest
-    Stamps = namedtuple("Stamps", "stamp")
-    rf.heap_compact(r, Stamps(np.array([0, 1, 1, 1, 0, 1, 1], dtype=np.int32)))
-    order = [int(r.htri[rf.heap_pop(r)]) for _ in range(int(r.ipar[rf.I_HSIZE]))]
+    stamp[:7] = [0, 1, 1, 1, 0, 1, 1]
+    queue_compact(r, m)
+    order = [int(r.htri[queue_pop(r)]) for _ in range(r.hsize)]
     assert order == ([3, 6, 1, 2, 5] if strategy == "triangle" else [1, 2, 3, 5, 6])
-    assert rf.queue_used(r) == (5 if strategy == "triangle" else 0)  # served entries stay in the log
-    rf.heap_compact(r, Stamps(np.ones(7, dtype=np.int32)))  # until the next compaction
-    assert rf.queue_used(r) == 0
-    rf.heap_push(r, -2047.0 if strategy == "triangle" else 0.0, 9, 1)
-    assert int(r.htri[rf.heap_pop(r)]) == 9 and r.ipar[rf.I_HSIZE] == 0
+    assert queue_used(r) == (5 if strategy == "triangle" else 0)  # served entries stay in the log
+    stamp[:7] = 1
+    queue_compact(r, m)  # until the next compaction
+    assert queue_used(r) == 0
+    queue_push(r, -2047.0 if strategy == "triangle" else 0.0, 9, 1)
+    assert int(r.htri[queue_pop(r)]) == 9 and r.hsize == 0
 
 
 def _areas(r):

@@ -23,7 +23,7 @@ import triangle
 import instrument
 import ruppert_io
 from instrument.check import check_mesh
-from instrument.driver import INPUT_KEYS
+from instrument.pipeline import INPUT_KEYS
 from instrument.secondorder import midpoints
 
 CORPUS = Path(os.environ.get("RUPPERT_CORPUS", Path(__file__).resolve().parents[3] / "shared" / "corpus"))

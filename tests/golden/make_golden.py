@@ -99,7 +99,7 @@ def _read(path: Path) -> dict:
             for k in ("segments", "segment_markers", "holes"):
                 if k in p and len(p[k]):
                     d[k] = p[k]
-    from instrument.driver import INPUT_KEYS
+    from instrument.pipeline import INPUT_KEYS
 
     return {k: v for k, v in d.items() if k in INPUT_KEYS and v is not None and np.size(v)}
 

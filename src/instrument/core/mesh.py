@@ -142,12 +142,13 @@ class Mesh:
         self.vslot = _widened(self.vslot, cap, -1)
 
     def grow_triangles(self, room: int, *, exact: bool = False) -> None:
-        """Make room for at least ``room`` more triangles than the free
-        slots hold (doubling unless ``exact``), in every per-triangle table."""
+        """If fewer than ``room`` triangles can be allocated, add room for
+        ``room`` more (at least doubling, so that repeated growth is
+        amortised, unless ``exact``), in every per-triangle table."""
         if self.spare() >= room:
             return
         old = self.stamp.shape[0]
-        want = old + int(room) - self.spare()
+        want = old + int(room)
         cap = want if exact else max(2 * old, want)
         self.corner = _widened(self.corner, 3 * cap, GHOST)
         self.twin = _widened(self.twin, 3 * cap, NO_EDGE)

@@ -1,1 +1,272 @@
-"""Quality refinement, the pipeline's fourth stage (being ported: see refine_numba.py)."""
+"""Quality refinement, the pipeline's fourth stage (``q``, ``a``, ``u``, ``D``).
+
+The kernels (splits.py and the modules it uses) run Ruppert's algorithm
+with Triangle's rules until no triangle is bad; this driver sets up their
+state from the switches, grows the mesh and the state when they ask for
+room, lets Python in when they pause (Ctrl-C, progress, the vertex limit),
+runs a Python ``triunsuitable`` between their rounds, and turns their
+outcomes into results or errors.
+
+Modules, in the order they build on each other:
+
+* ``order``: the strategies' priority keys;
+* ``state``: the run's ``Config`` and the loop's ``Refiner``;
+* ``queues``: the bad-triangle queue (a heap, or Triangle's buckets);
+* ``encroach``: the diametral-lens test and the encroached-subsegment pool;
+* ``cavity``: inserting a vertex (Bowyer-Watson cavity, rim, fan);
+* ``criteria``: the bad-triangle test and the Steiner point;
+* ``deletion``: Chew's deletion of free vertices;
+* ``splits``: splitting subsegments and bad triangles, and the loop.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import numpy as np
+
+from .. import limits
+from ..core.mesh import V_DEAD
+from ..core.navigate import build_vertex_edges
+from ..core.status import DONE, PAUSE, PRECISION
+from ..errors import TriangleError
+from ..state import MeshState
+from .order import strategy_id
+from ..switches import Options
+from .criteria import queue_triangles
+from .queues import queue_compact, queue_used
+from .splits import refine, tally_encroached
+from .state import TRACE_KINDS, Config, Refiner
+
+STEINER = ("offcenter", "circumcenter")
+
+TRACE_DTYPE = np.dtype(
+    [("kind", "U12"), ("created", "i8"), ("deleted", "i8"), ("walk_steps", "i8"), ("queue_length", "i8")]
+)
+
+# Measured: q20-q34 meshes under a fixed area bound A come out at 1.2-1.6 triangles per A
+# of domain (the unit square pq30a1e-6: 1,584,789), so room for 1.7 per A is rarely grown.
+TRIANGLES_PER_AREA_BOUND = 1.7
+PRESIZE_LIMIT = 1 << 26  # triangles: beyond this, grow on demand
+
+
+class PrecisionError(TriangleError):
+    """Triangle's "Ran out of precision" failure: segments too short to split."""
+
+
+def run(
+    ms: MeshState,
+    o: Options,
+    *,
+    strategy: str = "triangle",
+    steiner: str = "offcenter",
+    trace: bool = False,
+    triunsuitable: Callable | None = None,
+    max_vertices: int | None = None,
+    progress: Callable[[int, int], None] | None = None,
+) -> np.ndarray | None:
+    """Refine ``ms`` in place under ``o``; returns the trace (one record per
+    insertion attempt) if asked.
+
+    With ``o.u`` and a Python ``triunsuitable``, the kernel refines until
+    nothing is bad, then the callable judges every triangle made since, the
+    unsuitable ones are queued and the kernel goes on, until a round finds
+    none: the hot loop never calls Python.
+
+    ``max_vertices`` bounds the mesh (None: ``limits.vertex_limit``'s
+    default); passing it raises ``SizeLimitError``.  ``progress(vertices,
+    limit)`` is called whenever the kernel hands back control (every few
+    thousand splits)."""
+    if steiner not in STEINER:
+        raise ValueError(f"steiner must be one of {', '.join(STEINER)}, not {steiner!r}")
+    if o.S == 0:
+        return np.zeros(0, dtype=TRACE_DTYPE) if trace else None
+    user = triunsuitable if o.u else None
+    domain = _domain_area(ms)
+    bound = _smallest_area_bound(ms, o)
+    if max_vertices is None:
+        n_input = ms.n_input + ms.segs.count
+        limit = limits.vertex_limit(n_input=n_input, domain_area=domain, area_bound=bound, steiner_budget=o.S)
+    else:
+        limit = int(max_vertices)
+    why = limits.explain(max_vertices is None)
+    limits.check_expected(limit, domain, bound, explain=why)
+    _presize(ms, o, domain, limit)
+    r = new_refiner(ms, o, strategy, steiner, trace, user is not None)
+    build_vertex_edges(ms.mesh)
+    tally_encroached(r, ms.mesh, ms.segs)
+    guard = _Guard(limit, o.min_angle if o.q else 0.0, why, progress)
+    finish(ms, r, user, guard)
+    return _trace_table(np.asarray(r.trace)[: r.ntrace]) if trace else None
+
+
+def new_refiner(ms: MeshState, o: Options, strategy: str, steiner: str, trace: bool, python_test: bool = False) -> Refiner:
+    """The refinement kernel's state for mesh ``ms`` under switches ``o``:
+    the queues empty (``tally_encroached`` and ``finish`` fill them).
+    ``python_test``: a Python ``triunsuitable`` runs between kernel rounds,
+    so the kernel's own ``-u`` test stays off."""
+    m = ms.mesh
+    slots = m.triangle_capacity
+    cfg = Config(o, strategy_id(strategy), steiner == "offcenter", python_test)
+    return Refiner(
+        cfg, budget=o.S, slots=slots, queue=slots + 16, records=2 * ms.segs.count + 64, trace=trace  # room for every subsegment
+    )
+
+
+def grow_refiner(ms: MeshState, r: Refiner) -> None:
+    """After the kernel's NEED_ROOM: grow (doubling) whatever it ran out of,
+    in the mesh and in ``r``."""
+    need = max(64, r.need)
+    r.need = 0
+    ms.grow(vertices=16, triangles=need, records=16)
+    slots = ms.mesh.triangle_capacity
+    heap = r.hkey.shape[0]
+    if heap < queue_used(r) + need:  # stale and served entries first
+        queue_compact(r, ms.mesh)
+    if heap < queue_used(r) + need or heap < slots + 16:
+        heap = max(2 * heap, slots + 16)
+        for name in ("hkey", "hseq", "htri", "hstamp"):
+            setattr(r, name, _widened(getattr(r, name), heap, 0))
+    enc = r.enc.shape[0]
+    if enc < r.enc_live + need:  # a pool: slots keep their places
+        r.enc = _widened(r.enc, 2 * enc + need, 0)
+    if r.trace.shape[0] and r.ntrace + 64 > r.trace.shape[0]:
+        r.trace = _widened(r.trace, 2 * r.trace.shape[0], 0)
+    # The cavity's scratch holds nothing between steps (a NEED_ROOM step
+    # changed nothing and starts again): fresh zeros, which the OS maps
+    # lazily, instead of copies that touch every page.
+    for name in ("cav", "fan", "bnd", "bval"):
+        a = np.asarray(getattr(r, name))
+        if a.shape[0] < slots:
+            setattr(r, name, np.zeros((slots,) + a.shape[1:], dtype=a.dtype))
+
+
+def _widened(a, rows: int, fill) -> np.ndarray:
+    a = np.asarray(a)
+    out = np.full((rows,) + a.shape[1:], fill, dtype=a.dtype)
+    out[: a.shape[0]] = a
+    return out
+
+
+class _Guard:
+    """Between kernel calls: report progress, stop at the vertex limit."""
+
+    def __init__(self, limit: int, min_angle: float, why: str, progress: Callable[[int, int], None] | None):
+        self.limit = limit
+        self.min_angle = min_angle
+        self.why = why
+        self.progress = progress
+
+    def __call__(self, ms: MeshState) -> None:
+        n = ms.n_vertices
+        if self.progress is not None:
+            self.progress(n, self.limit)
+        if n > self.limit:
+            raise limits.stopped(n, self.limit, self.min_angle, explain=self.why)
+
+
+def _domain_area(ms: MeshState) -> float:
+    """The area the mesh covers (its live triangles)."""
+    from ..check import mesh_area  # only here: the command's start-up does not need the checker
+
+    m = ms.mesh
+    corner = np.asarray(m.corner).reshape(-1, 3)
+    return mesh_area({"vertices": np.asarray(m.xy), "triangles": corner[m.live_triangles()]})
+
+
+def _smallest_area_bound(ms: MeshState, o: Options) -> float | None:
+    """The smallest area bound of the run: -a's number, or the smallest
+    regional / per-triangle bound of a bare -a."""
+    bounds = [o.max_area] if o.max_area > 0 else []
+    table = np.asarray(ms.mesh.area_bound)
+    if o.var_area and table.shape[0]:
+        live = table[ms.mesh.live_triangles()]
+        live = live[np.isfinite(live) & (live > 0)]
+        if live.size:
+            bounds.append(float(live.min()))
+    return min(bounds) if bounds else None
+
+
+def _presize(ms: MeshState, o: Options, area: float, limit: int) -> None:
+    """Under a fixed area bound the mesh size is predictable: make room for
+    it at once rather than doubling (and copying) a dozen times (never for
+    more than the vertex limit allows)."""
+    if not o.max_area > 0:
+        return
+    n = ms.mesh.nslot
+    want = min(TRIANGLES_PER_AREA_BOUND * area / o.max_area, PRESIZE_LIMIT, 2.0 * limit)
+    if want > 2 * n:  # vertices: about half the triangles, and the free vertices Chew's rule deletes
+        ms.grow(vertices=int(0.7 * want), triangles=int(want))
+
+
+def _judge(ms: MeshState, user: Callable, judged: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Ask ``user(org, dest, apex, area)`` about every live triangle it has
+    not seen; returns the updated stamps and the unsuitable slots."""
+    m = ms.mesh
+    n = m.nslot
+    stamp = np.asarray(m.stamp)[:n]
+    if judged.shape[0] < n:
+        judged = _widened(judged, n, 0)
+    fresh = np.flatnonzero((stamp > 0) & (stamp != judged[:n]))
+    judged[fresh] = stamp[fresh]
+    xy = np.asarray(m.xy)
+    corner = np.asarray(m.corner)
+    bad = []
+    for t in fresh:
+        o, d, a = (xy[corner[3 * t + k]] for k in range(3))
+        area = 0.5 * ((d[0] - o[0]) * (a[1] - o[1]) - (d[1] - o[1]) * (a[0] - o[0]))
+        if user(o.copy(), d.copy(), a.copy(), area):
+            bad.append(t)
+    return judged, np.asarray(bad, dtype=np.int64)
+
+
+def finish(ms: MeshState, r: Refiner, user: Callable | None = None, guard: Callable[[MeshState], None] | None = None) -> None:
+    """Run the refinement kernel to the end: grow its arrays when it asks,
+    let Python in when it pauses (Ctrl-C), consult ``user`` when it is done,
+    and turn a precision failure into Triangle's error.  ``guard(ms)`` runs
+    each time the kernel hands back control, before anything grows (it may
+    raise to stop the run).  Records the deleted vertices on ``ms``."""
+    m = ms.mesh
+    judged = np.zeros(0, dtype=np.int32)  # the stamp each slot had when the callable judged it
+    while True:
+        status = refine(r, m, ms.segs)
+        if guard is not None and status != DONE:
+            guard(ms)
+        if status == DONE and user is not None and r.budget != 0:
+            judged, bad = _judge(ms, user, judged)
+            while r.hkey.shape[0] < queue_used(r) + bad.shape[0] + 16:
+                r.need = max(r.need, bad.shape[0] + 16)
+                grow_refiner(ms, r)
+            queue_triangles(r, m, bad)
+            if bad.shape[0]:
+                continue
+        if status == DONE:
+            break
+        if status == PAUSE:  # back in Python now and then, so Ctrl-C works
+            continue
+        if status == PRECISION:
+            raise _precision_error(m, r.error_org, r.error_dest)
+        grow_refiner(ms, r)
+    ms.dead = np.flatnonzero(np.asarray(m.vtype)[: m.nvert] == V_DEAD)
+
+
+def _precision_error(m, a: int, b: int) -> PrecisionError:
+    xy = np.asarray(m.xy)
+    return PrecisionError(
+        f"Ran out of precision at ({xy[a, 0]:.12g}, {xy[a, 1]:.12g}).\n"
+        f"I attempted to split a segment to a smaller size than\n"
+        f"  can be accommodated by the finite precision of\n"
+        f"  floating point arithmetic.\n"
+        f"  (segment ({xy[a, 0]:.12g}, {xy[a, 1]:.12g}) to ({xy[b, 0]:.12g}, {xy[b, 1]:.12g}))"
+    )
+
+
+def _trace_table(rows: np.ndarray) -> np.ndarray:
+    """One record per insertion attempt: kind (segment, circumcenter,
+    offcenter, rejected, deleted), triangles created and deleted, walk steps,
+    bad triangles queued afterwards."""
+    out = np.zeros(rows.shape[0], dtype=TRACE_DTYPE)
+    out["kind"] = np.array(TRACE_KINDS)[rows[:, 0]] if rows.shape[0] else []
+    for i, name in enumerate(TRACE_DTYPE.names[1:], start=1):
+        out[name] = rows[:, i]
+    return out

@@ -1,7 +1,8 @@
 # cython: language_level=3
-"""Which bad triangle is split next: the strategies' priority keys.
+"""Which bad triangle is split next: strategies by name, an id each, and
+their priority keys.
 
-Every strategy (``instrument.strategies()`` names them) is one priority key
+Every strategy (``strategies()`` names them) is one priority key
 per queued triangle (smaller is served first; ties go to the earlier
 entry), computed by ``priority`` when the triangle is queued, so the hot
 loop never calls back into Python.  A binary heap serves them, except
@@ -21,6 +22,30 @@ _DBL_MAX = cython.declare(cython.double, 1.7976931348623157e308)
 
 if not cython.compiled:  # compiled, these are order.pxd's enum
     TRIANGLE, WORST_ANGLE, FIFO, LIFO, RANDOM, LARGEST, SMALLEST, ADVERSARY = range(8)
+
+_DESCRIPTIONS = {
+    "triangle": (TRIANGLE, "Triangle 1.6's order: 4096 FIFO buckets by squared shortest edge, finest first"),
+    "worst-angle": (WORST_ANGLE, "smallest minimum angle first (CGAL's order)"),
+    "fifo": (FIFO, "first queued, first split"),
+    "lifo": (LIFO, "last queued, first split"),
+    "random": (RANDOM, "uniformly random among the queued triangles (seeded)"),
+    "largest": (LARGEST, "largest circumradius first"),
+    "smallest": (SMALLEST, "smallest circumradius first"),
+    "adversary": (ADVERSARY, "greedy: the split that would create the most triangles, measured when queued"),
+}
+
+
+def strategies() -> dict[str, str]:
+    """Strategy names with one line each, in a stable order."""
+    return {name: text for name, (_, text) in _DESCRIPTIONS.items()}
+
+
+def strategy_id(name: str) -> int:
+    """The id of strategy ``name`` (ValueError naming the choices if there is none)."""
+    try:
+        return _DESCRIPTIONS[name][0]
+    except KeyError:
+        raise ValueError(f"unknown strategy {name!r}; choose one of {', '.join(_DESCRIPTIONS)}") from None
 
 
 @cython.cfunc

@@ -1,6 +1,13 @@
 # Refinement's state (state.py): its configuration, and what the loop keeps between calls.
 from instrument.core.mesh cimport Index
 
+cpdef enum:         # trace rows' kinds (state.TRACE_KINDS names them)
+    T_SEGMENT = 0
+    T_CIRCUMCENTER = 1
+    T_OFFCENTER = 2
+    T_REJECTED = 3
+    T_DELETED = 4
+
 cdef class Config:
     cdef public int strategy         # order.pxd's ids
     cdef public bint diametral       # -D: diametral circles instead of lenses

@@ -23,8 +23,9 @@ from .order import TRIANGLE
 #: Triangle's bucket queue has this many FIFO lists.
 NBUCKETS = 4096
 
-#: Trace rows' kinds.
-T_SEGMENT, T_CIRCUMCENTER, T_OFFCENTER, T_REJECTED, T_DELETED = range(5)
+if not cython.compiled:  # compiled, these are state.pxd's enum
+    T_SEGMENT, T_CIRCUMCENTER, T_OFFCENTER, T_REJECTED, T_DELETED = range(5)  # trace rows' kinds
+#: Trace rows' kinds, by name.
 TRACE_KINDS = ("segment", "circumcenter", "offcenter", "rejected", "deleted")
 
 

@@ -10,6 +10,7 @@ cdef class Recovery:
     cdef public Index handled              # pieces handled so far
     cdef public Index inputs               # input segments
 
+cpdef (Index, int) turn_to(Mesh m, Index a, Index b, Index e0) noexcept nogil
 cpdef void mark_subsegment(Mesh m, Subsegments segs, Index e, int marker, int source) noexcept nogil
 cpdef bint restore_delaunay(Mesh m, long long[::1] stack) noexcept nogil
 cpdef int insert_segments(Mesh m, Subsegments segs, Recovery work) noexcept nogil

@@ -126,10 +126,10 @@ def _side(ax: cython.double, ay: cython.double, bx: cython.double, by: cython.do
     return 0.0 if fabs(s) <= tol * length else s
 
 
-@cython.cfunc
+@cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
-def _turn_to(m: Mesh, a: Index, b: Index, e0: Index) -> tuple[Index, cython.int]:
+def turn_to(m: Mesh, a: Index, b: Index, e0: Index) -> tuple[Index, cython.int]:
     """Turn around ``a`` (from edge ``e0``, origin ``a``) to the edge ``e``
     (origin ``a``) whose triangle contains the start of the ray ``a -> b``.
 
@@ -191,7 +191,7 @@ def _recover(
         return _PIECE_FAILED, -1, -1
     e: Index
     where: cython.int
-    e, where = _turn_to(m, a, b, e0)
+    e, where = turn_to(m, a, b, e0)
     if e < 0:
         return _PIECE_FAILED, -1, -1
     d: Index

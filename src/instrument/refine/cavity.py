@@ -1,0 +1,263 @@
+# cython: language_level=3
+"""Inserting a vertex during refinement: the Bowyer-Watson cavity.
+
+The cavity of a point is every triangle reachable from the point's triangle
+without crossing a subsegment whose circumcircle strictly contains the
+point.  Its incircle tests are exactly the ones Lawson's flips would make,
+so the counts compare with Triangle's, and an encroaching point is rejected
+before the mesh is touched (Triangle inserts it and undoes the flips).  The
+cavity is collected, its rim put in Triangle's order, and then replaced by
+the fan of triangles from the new vertex to the rim; ``triangles_created``
+of an insertion is the new vertex's degree, the paper's measure.
+
+A new triangle inherits the area bound and the regional attribute of the
+triangle inside the rim edge it stands on.
+
+Scratch: ``Refiner.cav`` (the cavity, and from its end the triangles
+tested outside it), ``Refiner.bnd``/``bval`` (the rim), ``Refiner.fan``
+(the new triangles), ``Mesh.tflag`` (1 in the cavity, 2 tested outside;
+all 0 again when a function here returns) and ``Mesh.vslot``.
+"""
+
+from __future__ import annotations
+
+import cython
+from cython.cimports.instrument.core.mesh import (
+    NO_EDGE,
+    NO_SEG,
+    Index,
+    Mesh,
+    bond,
+    kill_triangle,
+    lnext,
+    lprev,
+    new_triangle,
+    set_parent,
+    spare_triangles,
+)
+from cython.cimports.instrument.core.navigate import remember_corners
+from cython.cimports.instrument.core.predicates import incircle
+from cython.cimports.instrument.counters import C_CREATED, C_DELETED, C_INCIRCLE
+from cython.cimports.instrument.refine.queues import queue_used
+from cython.cimports.instrument.refine.state import Refiner
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def inherited(m: Mesh, t: Index) -> tuple[cython.double, cython.double]:
+    """Triangle slot ``t``'s area bound and regional attribute, which a new
+    triangle inherits: (-1, 0) when the run has none (the tables have no rows)."""
+    area: cython.double = m.area_bound[t] if m.area_bound.shape[0] else -1.0
+    attr: cython.double = m.attribute[t] if m.attribute.shape[0] else 0.0
+    return area, attr
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def inherit(m: Mesh, t: Index, area: cython.double, attr: cython.double) -> cython.void:
+    """Give triangle slot ``t`` an area bound and a regional attribute (if the run has them)."""
+    if m.area_bound.shape[0]:
+        m.area_bound[t] = area
+    if m.attribute.shape[0]:
+        m.attribute[t] = attr
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def collect_cavity(r: Refiner, m: Mesh, px: cython.double, py: cython.double, t0: Index, t1: Index, skip: Index) -> tuple[Index, Index]:
+    """Collect the cavity of point (px, py) from triangles ``t0`` (and ``t1``
+    if >= 0), not crossing subsegments or edge ``skip`` (and its twin).
+
+    Returns ``(ntri, nbnd)``: ``r.cav[:ntri]`` the triangles, ``r.bnd[:nbnd]``
+    the rim edges as (outer twin, org, dest, record, edge), each with the
+    area bound and attribute of its inner triangle in ``r.bval``.  Leaves
+    ``m.tflag`` set on the cavity's triangles; ``fill_cavity`` or
+    ``forget_cavity`` clears it.
+    """
+    xy = m.xy
+    cav = r.cav
+    n: Index = 1
+    cav[0] = t0
+    m.tflag[t0] = 1
+    if t1 >= 0:
+        cav[1] = t1
+        m.tflag[t1] = 1
+        n = 2
+    tested: Index = cav.shape[0]  # triangles tested outside go at the end of cav
+    nb: Index = 0
+    i: Index = 0
+    skip_twin: Index = m.twin[skip] if skip >= 0 else -2
+    t: Index
+    e: Index
+    tw: Index
+    u: Index
+    a: Index
+    b: Index
+    c: Index
+    outside: cython.bint
+    area: cython.double
+    attr: cython.double
+    while i < n:
+        t = cav[i]
+        i += 1
+        for k in range(3):
+            e = 3 * t + k
+            if e == skip or e == skip_twin:
+                continue
+            tw = m.twin[e]
+            outside = tw == NO_EDGE or m.seg[e] != NO_SEG
+            if not outside:
+                u = tw // 3
+                if m.tflag[u] == 1:
+                    continue
+                if m.tflag[u] == 0:
+                    a, b, c = m.corner[3 * u], m.corner[3 * u + 1], m.corner[3 * u + 2]
+                    m.work[C_INCIRCLE] += 1
+                    if incircle(xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[c, 0], xy[c, 1], px, py) > 0.0:
+                        m.tflag[u] = 1
+                        cav[n] = u
+                        n += 1
+                        continue
+                    m.tflag[u] = 2
+                    tested -= 1
+                    cav[tested] = u
+                outside = True
+            r.bnd[nb, 0] = tw
+            r.bnd[nb, 1] = m.corner[lnext(e)]
+            r.bnd[nb, 2] = m.corner[lprev(e)]
+            r.bnd[nb, 3] = m.seg[e]
+            r.bnd[nb, 4] = e
+            area, attr = inherited(m, t)
+            r.bval[nb, 0] = area
+            r.bval[nb, 1] = attr
+            nb += 1
+    for j in range(tested, cav.shape[0]):
+        m.tflag[cav[j]] = 0
+    return n, nb
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def forget_cavity(r: Refiner, m: Mesh, n: Index) -> cython.void:
+    """Clear the cavity marks of an insertion that will not happen."""
+    for i in range(n):
+        m.tflag[r.cav[i]] = 0
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def order_rim(r: Refiner, m: Mesh, nb: Index, first: Index) -> cython.void:
+    """Put the cavity's rim ``r.bnd[:nb]`` in counter-clockwise order from
+    the edge leaving vertex ``first``: the order in which Triangle's flips
+    meet the new vertex's triangles, so bad triangles and encroached
+    subsegments are queued in its order."""
+    bnd = r.bnd
+    bval = r.bval
+    slot = m.vslot
+    j: Index
+    want: Index
+    for j in range(nb):
+        slot[bnd[j, 1]] = j
+    want = first
+    for pos in range(nb):
+        j = slot[want]
+        if j < 0:
+            break
+        if j != pos:
+            for c in range(bnd.shape[1]):
+                bnd[j, c], bnd[pos, c] = bnd[pos, c], bnd[j, c]
+            for c in range(bval.shape[1]):
+                bval[j, c], bval[pos, c] = bval[pos, c], bval[j, c]
+            slot[bnd[j, 1]] = j
+            slot[bnd[pos, 1]] = pos
+        want = bnd[pos, 2]
+    for j in range(nb):
+        slot[bnd[j, 1]] = -1
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def fill_cavity(r: Refiner, m: Mesh, p: Index, n: Index, nb: Index) -> cython.void:
+    """Replace the cavity by the fan of triangles from ``p`` to its rim
+    (listed in ``r.fan[:nb]``)."""
+    t: Index
+    u: Index
+    v: Index
+    nxt: Index
+    for i in range(n):
+        t = r.cav[i]
+        m.tflag[t] = 0
+        kill_triangle(m, t)
+    m.work[C_DELETED] += n
+    for j in range(nb):
+        u = r.bnd[j, 1]
+        v = r.bnd[j, 2]
+        t = new_triangle(m, p, u, v)
+        m.work[C_CREATED] += 1
+        bond(m, 3 * t, r.bnd[j, 0])  # (new_triangle left the other edges unlinked)
+        m.seg[3 * t] = cython.cast(cython.int, r.bnd[j, 3])
+        inherit(m, t, r.bval[j, 0], r.bval[j, 1])
+        m.vslot[u] = t
+        r.fan[j] = t
+        remember_corners(m, t)
+    for j in range(nb):  # link the fan: edge v -> p of (p, u, v) to p -> v of the next
+        u = r.bnd[j, 1]
+        v = r.bnd[j, 2]
+        t = m.vslot[u]
+        nxt = m.vslot[v]
+        if nxt >= 0:
+            bond(m, 3 * t + 1, 3 * nxt + 2)
+    for j in range(nb):
+        m.vslot[r.bnd[j, 1]] = -1
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def has_room(r: Refiner, m: Mesh, nb: Index) -> cython.bint:
+    """Enough room to add a vertex and ``nb`` triangles and queue them?  If
+    not, says how much is needed (``r.need``) for the driver."""
+    ok: cython.bint = (
+        m.nvert < m.xy.shape[0]
+        and spare_triangles(m) >= nb + 2
+        and queue_used(r) + nb + 2 <= r.hkey.shape[0]
+        and r.enc_live + nb + 4 <= r.enc.shape[0]
+    )
+    if not ok:
+        r.need = max(r.need, nb + 4)
+    return ok
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def new_vertex(
+    m: Mesh, px: cython.double, py: cython.double, kind: cython.int, marker: cython.int,
+    p0: Index, p1: Index, p2: Index, s: cython.double, t: cython.double,
+) -> Index:
+    """A new vertex at (px, py) of ``kind`` (mesh.pxd's V_*), with its boundary
+    marker and its attributes' interpolation record (see ``set_parent``)."""
+    v: Index = m.nvert
+    m.nvert = v + 1
+    m.xy[v, 0] = px
+    m.xy[v, 1] = py
+    m.vtype[v] = kind
+    m.vmark[v] = marker
+    set_parent(m, v, p0, p1, p2, s, t)
+    return v
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def mark_both(m: Mesh, e: Index, rec: Index) -> cython.void:
+    """Make edge ``e`` (both sides) part of subsegment record ``rec``."""
+    m.seg[e] = cython.cast(cython.int, rec)
+    if m.twin[e] != NO_EDGE:
+        m.seg[m.twin[e]] = cython.cast(cython.int, rec)

@@ -1,0 +1,290 @@
+# cython: language_level=3
+"""What makes a triangle bad, and where a bad triangle is split.
+
+A triangle is bad (Triangle's ``testtriangle``) when it is larger than the
+fixed area bound (``-a<A>``), than its own bound (a bare ``-a``), fails
+Triangle's sample user test (``-u``), or has an angle below the minimum
+(``-q``) -- unless its shortest edge joins two segment vertices at the same
+distance from the vertex where their segments meet (Miller, Pav and
+Walkington's exemption for small input angles).  A bad triangle is queued
+under the strategy's key (order.py) and split at its off-center (when
+closer) or circumcenter (``steiner_point``).
+"""
+
+from __future__ import annotations
+
+import cython
+from cython.cimports.instrument.core.mesh import NO_SEG, V_SEGMENT, Index, Mesh, lnext, lprev, next_random
+from cython.cimports.instrument.core.navigate import edge_around, origin_edge
+from cython.cimports.instrument.core.predicates import orient2d
+from cython.cimports.instrument.core.subsegments import Subsegments
+from cython.cimports.instrument.refine.cavity import collect_cavity, forget_cavity, inherited
+from cython.cimports.instrument.refine.encroach import check_subsegment
+from cython.cimports.instrument.refine.order import ADVERSARY, RANDOM, priority
+from cython.cimports.instrument.refine.queues import queue_push
+from cython.cimports.instrument.refine.state import Refiner
+
+_INF = cython.declare(cython.double, float("inf"))
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _shape(m: Mesh, a: Index, b: Index, c: Index) -> tuple[cython.double, cython.double, cython.double, cython.double, Index, Index]:
+    """Squared shortest edge, cos^2 of the smallest angle, twice the area,
+    squared circumradius, and the shortest edge's end vertices."""
+    xy = m.xy
+    la: cython.double = (xy[b, 0] - xy[c, 0]) * (xy[b, 0] - xy[c, 0]) + (xy[b, 1] - xy[c, 1]) * (xy[b, 1] - xy[c, 1])  # opposite a
+    lb: cython.double = (xy[c, 0] - xy[a, 0]) * (xy[c, 0] - xy[a, 0]) + (xy[c, 1] - xy[a, 1]) * (xy[c, 1] - xy[a, 1])
+    lc: cython.double = (xy[a, 0] - xy[b, 0]) * (xy[a, 0] - xy[b, 0]) + (xy[a, 1] - xy[b, 1]) * (xy[a, 1] - xy[b, 1])
+    q: Index
+    u: Index
+    v: Index
+    mn: cython.double
+    l1: cython.double
+    l2: cython.double
+    if lc < la and lc < lb:  # shortest a-b, smallest angle at c
+        q, u, v, mn, l1, l2 = c, a, b, lc, la, lb
+    elif la < lb:
+        q, u, v, mn, l1, l2 = a, b, c, la, lb, lc
+    else:
+        q, u, v, mn, l1, l2 = b, c, a, lb, lc, la
+    dot: cython.double = (xy[u, 0] - xy[q, 0]) * (xy[v, 0] - xy[q, 0]) + (xy[u, 1] - xy[q, 1]) * (xy[v, 1] - xy[q, 1])
+    cos2: cython.double = dot * dot / (l1 * l2)
+    if dot < 0.0:  # an obtuse smallest angle cannot happen; keep the sign meaningful
+        cos2 = -cos2
+    area2: cython.double = (xy[b, 0] - xy[a, 0]) * (xy[c, 1] - xy[a, 1]) - (xy[b, 1] - xy[a, 1]) * (xy[c, 0] - xy[a, 0])
+    circ2: cython.double = la * lb * lc / (area2 * area2) / 4.0 if area2 != 0.0 else _INF
+    return mn, cos2, area2, circ2, u, v
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _segment_of(m: Mesh, v: Index) -> Index:
+    """The record of some subsegment at vertex ``v`` (-1 if none)."""
+    e0: Index = origin_edge(m, v)
+    e: Index = edge_around(m, e0, -1) if e0 >= 0 else -1
+    return m.seg[e] if e >= 0 else -1
+
+
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _same(m: Mesh, u: Index, v: Index) -> cython.bint:
+    return m.xy[u, 0] == m.xy[v, 0] and m.xy[u, 1] == m.xy[v, 1]
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _small_input_angle(m: Mesh, segs: Subsegments, u: Index, v: Index) -> cython.bint:
+    """Miller, Pav and Walkington's exemption: the shortest edge ``u v`` joins
+    two segment vertices on segments that meet at a vertex J, at nearly the
+    same distance from J (the same concentric shell)."""
+    if m.vtype[u] != V_SEGMENT or m.vtype[v] != V_SEGMENT:
+        return False
+    s1: Index = _segment_of(m, u)
+    s2: Index = _segment_of(m, v)
+    if s1 < 0 or s2 < 0:
+        return False
+    xy = m.xy
+    a1: Index = segs.ends[s1, 0]
+    b1: Index = segs.ends[s1, 1]
+    a2: Index = segs.ends[s2, 0]
+    b2: Index = segs.ends[s2, 1]
+    # a shared end, compared by coordinates (in either direction: Triangle
+    # relies on its subsegments' orientation, our records keep the input's)
+    j: Index = -1
+    if _same(m, b1, a2) or _same(m, b1, b2):
+        j = b1
+    elif _same(m, a1, b2) or _same(m, a1, a2):
+        j = a1
+    if j < 0:
+        return False
+    d1: cython.double = (xy[u, 0] - xy[j, 0]) * (xy[u, 0] - xy[j, 0]) + (xy[u, 1] - xy[j, 1]) * (xy[u, 1] - xy[j, 1])
+    d2: cython.double = (xy[v, 0] - xy[j, 0]) * (xy[v, 0] - xy[j, 0]) + (xy[v, 1] - xy[j, 1]) * (xy[v, 1] - xy[j, 1])
+    return 0.999 * d2 < d1 < 1.001 * d2
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def builtin_unsuitable(m: Mesh, o: Index, d: Index, a: Index) -> cython.bint:
+    """Triangle's sample ``triunsuitable``: the longest edge squared exceeds
+    0.05 (x^2 + y^2) + 0.02 at the origin vertex ``o``."""
+    xy = m.xy
+    od: cython.double = (xy[o, 0] - xy[d, 0]) * (xy[o, 0] - xy[d, 0]) + (xy[o, 1] - xy[d, 1]) * (xy[o, 1] - xy[d, 1])
+    da: cython.double = (xy[d, 0] - xy[a, 0]) * (xy[d, 0] - xy[a, 0]) + (xy[d, 1] - xy[a, 1]) * (xy[d, 1] - xy[a, 1])
+    ao: cython.double = (xy[a, 0] - xy[o, 0]) * (xy[a, 0] - xy[o, 0]) + (xy[a, 1] - xy[o, 1]) * (xy[a, 1] - xy[o, 1])
+    return max(od, da, ao) > 0.05 * (xy[o, 0] * xy[o, 0] + xy[o, 1] * xy[o, 1]) + 0.02
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def steiner_point(r: Refiner, m: Mesh, h: Index) -> tuple[cython.double, cython.double, cython.double, cython.double, cython.bint]:
+    """The off-center (when closer) or circumcenter of the triangle of
+    handle ``h`` (an edge: org, dest, apex as ``mesh`` defines them), and
+    its barycentric parameters (xi, eta) relative to (org, dest, apex), and
+    whether it is the off-center.
+
+    Computed from the handle's corners in Triangle's order: a bad triangle
+    is split from handle ``3 t`` (apex at corner 0, where an insertion puts
+    the new vertex, as in the handle Triangle queues), which gives Triangle's
+    rounding, so the same Steiner points."""
+    xy = m.xy
+    o: Index = m.corner[lnext(h)]
+    d: Index = m.corner[lprev(h)]
+    a: Index = m.corner[h]
+    ox: cython.double = xy[o, 0]
+    oy: cython.double = xy[o, 1]
+    xdo: cython.double = xy[d, 0] - ox
+    ydo: cython.double = xy[d, 1] - oy
+    xao: cython.double = xy[a, 0] - ox
+    yao: cython.double = xy[a, 1] - oy
+    dodist: cython.double = xdo * xdo + ydo * ydo
+    aodist: cython.double = xao * xao + yao * yao
+    dadist: cython.double = (xy[d, 0] - xy[a, 0]) * (xy[d, 0] - xy[a, 0]) + (xy[d, 1] - xy[a, 1]) * (xy[d, 1] - xy[a, 1])
+    denom: cython.double = 0.5 / orient2d(xy[d, 0], xy[d, 1], xy[a, 0], xy[a, 1], ox, oy)
+    dx: cython.double = (yao * dodist - ydo * aodist) * denom
+    dy: cython.double = (xdo * aodist - xao * dodist) * denom
+    off: cython.bint = False
+    c: cython.double = r.cfg.off_constant
+    fx: cython.double
+    fy: cython.double
+    ex: cython.double
+    ey: cython.double
+    if r.cfg.offcenter and c > 0.0:
+        if dodist < aodist and dodist < dadist:
+            fx = 0.5 * xdo - c * ydo
+            fy = 0.5 * ydo + c * xdo
+            if fx * fx + fy * fy < dx * dx + dy * dy:
+                dx, dy, off = fx, fy, True
+        elif aodist < dadist:
+            fx = 0.5 * xao + c * yao
+            fy = 0.5 * yao - c * xao
+            if fx * fx + fy * fy < dx * dx + dy * dy:
+                dx, dy, off = fx, fy, True
+        else:
+            ex = xy[a, 0] - xy[d, 0]
+            ey = xy[a, 1] - xy[d, 1]
+            fx = 0.5 * ex - c * ey
+            fy = 0.5 * ey + c * ex
+            if fx * fx + fy * fy < (dx - xdo) * (dx - xdo) + (dy - ydo) * (dy - ydo):
+                dx, dy, off = xdo + fx, ydo + fy, True
+    xi: cython.double = (yao * dx - xao * dy) * (2.0 * denom)
+    eta: cython.double = (xdo * dy - ydo * dx) * (2.0 * denom)
+    return ox + dx, oy + dy, xi, eta, off
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _would_create(r: Refiner, m: Mesh, t: Index) -> Index:
+    """Triangles a split of ``t`` would create (the adversary's greed)."""
+    px: cython.double
+    py: cython.double
+    xi: cython.double
+    eta: cython.double
+    off: cython.bint
+    px, py, xi, eta, off = steiner_point(r, m, 3 * t)
+    if px != px or py != py:  # NaN
+        return 0
+    n: Index
+    nb: Index
+    n, nb = collect_cavity(r, m, px, py, t, -1, -1)
+    forget_cavity(r, m, n)
+    return nb
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _queue(r: Refiner, m: Mesh, t: Index, mn: cython.double, cos2: cython.double, circ2: cython.double) -> cython.void:
+    """Put bad triangle ``t`` on the queue under the strategy's priority."""
+    strategy: cython.int = r.cfg.strategy
+    created: Index = _would_create(r, m, t) if strategy == ADVERSARY else 0
+    rnd: cython.double = 0.0
+    if strategy == RANDOM:  # only then: the walks share this generator
+        next_random(m)
+        rnd = cython.cast(cython.double, m.rng)
+    key: cython.double = priority(strategy, mn, cos2, circ2, created, r.seq, rnd)
+    queue_push(r, key, t, m.stamp[t])
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def test_triangle(r: Refiner, m: Mesh, segs: Subsegments, t: Index) -> cython.void:
+    """Queue triangle ``t`` if it is too big or too skinny (Triangle's
+    ``testtriangle``); the caller made sure the queue has room."""
+    a: Index = m.corner[3 * t]
+    b: Index = m.corner[3 * t + 1]
+    c: Index = m.corner[3 * t + 2]
+    mn: cython.double
+    cos2: cython.double
+    area2: cython.double
+    circ2: cython.double
+    u: Index
+    v: Index
+    mn, cos2, area2, circ2, u, v = _shape(m, a, b, c)
+    bad: cython.bint = False
+    if r.cfg.fixed_area and 0.5 * area2 > r.cfg.max_area:
+        bad = True
+    bound: cython.double
+    attr: cython.double
+    bound, attr = inherited(m, t)
+    if not bad and r.cfg.regional_area and bound > 0.0 and 0.5 * area2 > bound:
+        bad = True
+    if not bad and r.cfg.builtin_user and builtin_unsuitable(m, a, b, c):
+        bad = True
+    k: Index
+    exempt: cython.bint
+    if not bad and r.cfg.angle_test and cos2 > r.cfg.good_angle:
+        # the shortest edge is not a subsegment and its ends lie on segments
+        # meeting at a small angle: leave it alone
+        k = 0
+        for kk in range(3):
+            if m.corner[3 * t + kk] != u and m.corner[3 * t + kk] != v:
+                k = kk
+        exempt = m.seg[3 * t + k] == NO_SEG and _small_input_angle(m, segs, u, v)
+        bad = not exempt
+    if bad:
+        _queue(r, m, t, mn, cos2, circ2)
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def queue_triangles(r: Refiner, m: Mesh, ts: cython.longlong[::1]) -> cython.void:
+    """Queue the live triangles ``ts`` (a user's size test found them
+    unsuitable); the caller made sure the queue has room."""
+    t: Index
+    mn: cython.double
+    cos2: cython.double
+    area2: cython.double
+    circ2: cython.double
+    u: Index
+    v: Index
+    for i in range(ts.shape[0]):
+        t = ts[i]
+        if m.stamp[t] > 0:
+            mn, cos2, area2, circ2, u, v = _shape(m, m.corner[3 * t], m.corner[3 * t + 1], m.corner[3 * t + 2])
+            _queue(r, m, t, mn, cos2, circ2)
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def test_fan(r: Refiner, m: Mesh, segs: Subsegments, nb: Index, triangles: cython.bint) -> cython.void:
+    """Quality-test the new triangles ``r.fan[:nb]`` (if ``triangles``) and
+    pool the encroached subsegments on the fan's rim."""
+    t: Index
+    for j in range(nb):
+        t = r.fan[j]
+        if triangles:
+            test_triangle(r, m, segs, t)
+        if m.seg[3 * t] != NO_SEG:
+            check_subsegment(r, m, 3 * t)

@@ -1,0 +1,212 @@
+# cython: language_level=3
+"""Chew's rule: before a subsegment is split, the free vertices inside its
+diametral circle are deleted, and each one's star is re-triangulated.
+
+A free vertex's star is a polygon; ``_fill_polygon`` triangulates it by
+taking, for each base edge, the vertex whose circle through the edge holds
+no other candidate (the constrained Delaunay choice), then recursing on
+both sides.  Deleting is only attempted from a side of the subsegment where
+no other segment meets it.
+"""
+
+from __future__ import annotations
+
+import cython
+from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, V_DEAD, V_FREE, Index, Mesh, bond, kill_triangle, lnext, lprev, new_triangle, spare_triangles
+from cython.cimports.instrument.core.navigate import find_edge, origin_edge, remember_corners
+from cython.cimports.instrument.core.predicates import incircle
+from cython.cimports.instrument.core.subsegments import Subsegments
+from cython.cimports.instrument.counters import C_CREATED, C_DELETED, C_DELETED_VERTEX, C_INCIRCLE
+from cython.cimports.instrument.refine.cavity import inherit, inherited
+from cython.cimports.instrument.refine.criteria import test_triangle
+from cython.cimports.instrument.refine.queues import queue_used
+from cython.cimports.instrument.refine.state import T_DELETED, Refiner, trace_row
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _fill_polygon(
+    r: Refiner, m: Mesh, chain: cython.longlong[:], outer: cython.longlong[:], outer_seg: cython.longlong[:],
+    count: Index, stack: cython.longlong[:],
+) -> tuple[Index, Index]:
+    """Triangulate the polygon ``chain[0..count-1]`` whose other vertices lie
+    left of ``chain[0] -> chain[count-1]``: each base edge takes the vertex
+    whose circle through it holds no other candidate (the constrained
+    Delaunay choice), then both sides recurse.  ``outer[i]`` is the outside
+    twin of the polygon edge ``chain[i] chain[i+1]``.  New triangles go on
+    ``r.fan``; returns (base edge of the first, how many)."""
+    xy = m.xy
+    root: Index = -1
+    made: Index = 0
+    stack[0] = 0
+    stack[1] = count - 1
+    stack[2] = -1
+    sp: Index = 1
+    i: Index
+    j: Index
+    pe: Index
+    ci: Index
+    cj: Index
+    k: Index
+    ck: Index
+    cq: Index
+    t: Index
+    while sp > 0:
+        sp -= 1
+        i = stack[3 * sp]
+        j = stack[3 * sp + 1]
+        pe = stack[3 * sp + 2]
+        if j == i + 1:  # a polygon edge: link to the outside
+            bond(m, pe, outer[i])
+            m.seg[pe] = cython.cast(cython.int, outer_seg[i])
+            continue
+        ci = chain[i]
+        cj = chain[j]
+        k = i + 1
+        for q in range(i + 2, j):
+            m.work[C_INCIRCLE] += 1
+            ck = chain[k]
+            cq = chain[q]
+            if incircle(xy[ci, 0], xy[ci, 1], xy[cj, 0], xy[cj, 1], xy[ck, 0], xy[ck, 1], xy[cq, 0], xy[cq, 1]) > 0.0:
+                k = q
+        t = new_triangle(m, chain[k], ci, cj)
+        m.work[C_CREATED] += 1
+        r.fan[made] = t
+        made += 1
+        remember_corners(m, t)
+        if pe < 0:
+            root = 3 * t
+        else:
+            bond(m, 3 * t, pe)
+        stack[3 * sp] = i
+        stack[3 * sp + 1] = k
+        stack[3 * sp + 2] = 3 * t + 2
+        stack[3 * sp + 3] = k
+        stack[3 * sp + 4] = j
+        stack[3 * sp + 5] = 3 * t + 1
+        sp += 2
+    return root, made
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def delete_free_vertex(r: Refiner, m: Mesh, segs: Subsegments, v: Index) -> cython.bint:
+    """Remove free vertex ``v`` (Chew's rule: it sits in a subsegment's
+    diametral circle) and re-triangulate its star.  Returns False (nothing
+    changed) if ``v`` is on the boundary or the scratch space is short."""
+    e0: Index = origin_edge(m, v)
+    if e0 < 0:
+        return False
+    # the star, counter-clockwise: w[i] = dest of the i-th edge out of v
+    w: cython.longlong[:] = r.cav  # vertices
+    outer: cython.longlong[:] = r.bnd[:, 0]  # outside twin of w[i] -> w[i+1]
+    tris: cython.longlong[:] = r.bnd[:, 1]
+    rec: cython.longlong[:] = r.bnd[:, 3]  # record of w[i] -> w[i+1]
+    area: cython.double[:] = r.bval[:, 0]
+    attr: cython.double[:] = r.bval[:, 1]
+    d: Index = 0
+    e: Index = e0
+    t: Index
+    nxt: Index
+    for _ in range(m.stamp.shape[0]):
+        if d + 2 >= w.shape[0] // 4:
+            return False
+        t = e // 3
+        w[d] = m.corner[lprev(e)]
+        outer[d] = m.twin[lnext(e)]  # edge dest -> apex, opposite v
+        rec[d] = m.seg[lnext(e)]
+        tris[d] = t
+        area[d], attr[d] = inherited(m, t)
+        d += 1
+        nxt = m.twin[lprev(e)]
+        if nxt == NO_EDGE:
+            return False
+        e = nxt
+        if e == e0:
+            break
+    if d < 3 or spare_triangles(m) < d or queue_used(r) + d + 2 > r.hkey.shape[0]:
+        return False
+    # the polygon w0 .. w[d-1]; base w0 -> w1, chain w0, w[d-1], ..., w1
+    half: Index = w.shape[0] // 2
+    chain: cython.longlong[:] = w[half:]
+    ring: cython.longlong[:] = r.fan  # outside twins in chain order (fan is overwritten later)
+    ring_seg: cython.longlong[:] = m.vslot  # and records (vslot is all -1 between insertions)
+    chain[0] = w[0]
+    for i in range(1, d):
+        chain[i] = w[d - i]
+    # chain edge (chain[i], chain[i+1]) is the star's edge w[d-1-i] -> w[d-i]
+    for i in range(d - 1):
+        ring[i] = outer[(d - 1 - i) % d]
+        ring_seg[i] = rec[(d - 1 - i) % d]
+    base_outer: Index = outer[0]
+    base_seg: Index = rec[0]
+    for i in range(d):
+        kill_triangle(m, tris[i])
+    m.work[C_DELETED] += d
+    area0: cython.double = area[0]
+    attr0: cython.double = attr[0]
+    for i in range(d):  # the outside twins move to w's place: fan is the fill's output
+        w[i] = ring[i] if i < d - 1 else -1
+    # the fill's stack (3 per level, d levels at most) in bnd's free column
+    for i in range(d - 1):  # records too: vslot must be all -1 again after
+        rec[i] = ring_seg[i]
+        ring_seg[i] = -1
+    root: Index
+    made: Index
+    root, made = _fill_polygon(r, m, chain, w, rec, d, r.bnd[:, 2])
+    bond(m, root, base_outer)
+    m.seg[root] = cython.cast(cython.int, base_seg)
+    for i in range(made):
+        inherit(m, r.fan[i], area0, attr0)
+    m.vtype[v] = V_DEAD
+    m.work[C_DELETED_VERTEX] += 1
+    trace_row(r, T_DELETED, made, d, 0, r.hsize)
+    if r.cfg.keep_segments == 0:
+        for i in range(made):
+            test_triangle(r, m, segs, r.fan[i])
+    return True
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def chew_delete(r: Refiner, m: Mesh, segs: Subsegments, e: Index) -> cython.bint:
+    """Before splitting subsegment ``e``: delete free vertices inside its
+    diametral circle on a side where no other segment meets it.  Returns
+    False if there was no room (nothing changed on that side)."""
+    u: Index = m.corner[lnext(e)]
+    v: Index = m.corner[lprev(e)]
+    xy = m.xy
+    f: Index
+    o: Index
+    d: Index
+    a: Index
+    dot: cython.double
+    for side in range(2):
+        if side == 0:
+            f = e
+        else:  # found afresh: deletions on the first side re-make e's triangle
+            f = find_edge(m, v, u)
+        if f < 0:  # (NO_EDGE too)
+            continue
+        if m.seg[lnext(f)] != NO_SEG or m.seg[lprev(f)] != NO_SEG:
+            continue
+        for _ in range(m.stamp.shape[0]):
+            o = m.corner[lnext(f)]
+            d = m.corner[lprev(f)]
+            a = m.corner[f]
+            if m.vtype[a] != V_FREE:
+                break
+            dot = (xy[o, 0] - xy[a, 0]) * (xy[d, 0] - xy[a, 0]) + (xy[o, 1] - xy[a, 1]) * (xy[d, 1] - xy[a, 1])
+            if dot >= 0.0:
+                break
+            if queue_used(r) + 64 > r.hkey.shape[0]:
+                return False
+            if not delete_free_vertex(r, m, segs, a):
+                break
+            f = find_edge(m, o, d)  # the same side again
+            if f < 0:
+                return True
+    return True

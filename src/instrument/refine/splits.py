@@ -1,0 +1,363 @@
+# cython: language_level=3
+"""Ruppert's Delaunay refinement with Triangle's rules: the splits and the loop.
+
+The loop (Triangle's ``enforcequality``): split every encroached subsegment;
+queue every bad triangle; then repeatedly take the next bad triangle (the
+strategy's priority decides which), compute its off-center or circumcenter
+and insert it, unless the point lies across a subsegment or inside a
+subsegment's diametral lens (circle with -D), in which case the subsegment
+is pooled and split instead.
+
+``refine`` is resumable: it returns ``NEED_ROOM`` when an array is full
+(nothing half done; the driver grows it and calls again), ``PAUSE`` now and
+then (so that Python can see Ctrl-C and report progress), ``PRECISION``
+when a subsegment is too short to split, and ``DONE``.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+import cython
+from cython.cimports.instrument.core.locate import LOC_BLOCKED, LOC_FAILED, LOC_INSIDE, LOC_ON_EDGE, LOC_ON_VERTEX, line_walk, precise_walk
+from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, V_FREE, V_SEGMENT, Index, Mesh, lnext, lprev
+from cython.cimports.instrument.core.navigate import find_edge
+from cython.cimports.instrument.core.predicates import orient2d
+from cython.cimports.instrument.core.status import DONE, NEED_ROOM, PAUSE, PRECISION
+from cython.cimports.instrument.core.subsegments import Subsegments, new_record
+from cython.cimports.instrument.counters import (
+    C_CIRCUMCENTER,
+    C_DUPLICATE,
+    C_QUEUE_POP,
+    C_REJECTED,
+    C_SEGMENT_SPLIT,
+    C_STALE_POP,
+    C_STEINER,
+    C_UNDONE,
+    C_WALK,
+)
+from cython.cimports.instrument.refine.cavity import collect_cavity, fill_cavity, forget_cavity, has_room, mark_both, new_vertex, order_rim
+from cython.cimports.instrument.refine.criteria import steiner_point, test_fan, test_triangle
+from cython.cimports.instrument.refine.deletion import chew_delete
+from cython.cimports.instrument.refine.encroach import check_subsegment, enc_edge, enc_free, enc_push, in_lens, may_split, queue_side
+from cython.cimports.instrument.refine.queues import queue_clear, queue_compact, queue_pop, queue_push, queue_used
+from cython.cimports.instrument.refine.state import T_CIRCUMCENTER, T_OFFCENTER, T_REJECTED, T_SEGMENT, Refiner, trace_full, trace_row
+from cython.cimports.libc.math import sqrt
+
+#: bad triangles taken between two PAUSEs
+PAUSE_EVERY = cython.declare(Index, 1 << 14)
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles: cython.bint) -> cython.int:
+    """Split subsegment edge ``e`` at its midpoint or on a power-of-two shell
+    around an end shared with another segment.  Returns DONE, NEED_ROOM
+    (nothing changed) or PRECISION."""
+    xy = m.xy
+    o: Index = m.corner[lnext(e)]
+    d: Index = m.corner[lprev(e)]
+    tw: Index = m.twin[e]
+    acute_org: cython.bint = m.seg[lprev(e)] != NO_SEG
+    acute_dest: cython.bint = m.seg[lnext(e)] != NO_SEG
+    if tw != NO_EDGE:
+        acute_org = acute_org or m.seg[lnext(tw)] != NO_SEG
+        acute_dest = acute_dest or m.seg[lprev(tw)] != NO_SEG
+    # Triangle's record runs the other way along e, from e0 = d to e1 = o;
+    # computing from its ends gives its rounding, so the same vertices
+    e0: Index = d
+    e1: Index = o
+    acute0: cython.bint = acute_dest
+    acute1: cython.bint = acute_org
+    ex: cython.double = xy[e1, 0] - xy[e0, 0]
+    ey: cython.double = xy[e1, 1] - xy[e0, 1]
+    split: cython.double = 0.5
+    length: cython.double
+    p2: cython.double
+    if acute0 or acute1:
+        length = sqrt(ex * ex + ey * ey)
+        p2 = 1.0
+        while length > 3.0 * p2:
+            p2 *= 2.0
+        while length < 1.5 * p2:
+            p2 *= 0.5
+        # a power of two from the acute end; with both acute, from e1
+        split = p2 / length
+        if acute1:
+            split = 1.0 - split
+    px: cython.double = xy[e0, 0] + split * ex
+    py: cython.double = xy[e0, 1] + split * ey
+    # one correction toward the segment's line
+    den: cython.double = ex * ex + ey * ey
+    mult: cython.double = orient2d(xy[e0, 0], xy[e0, 1], xy[e1, 0], xy[e1, 1], px, py) / den
+    if mult != 0.0 and den != 0.0 and mult == mult:
+        px += mult * ey
+        py += mult * -ex
+    if (px == xy[o, 0] and py == xy[o, 1]) or (px == xy[d, 0] and py == xy[d, 1]):
+        r.error_org = o
+        r.error_dest = d
+        return PRECISION
+    t1: Index = tw // 3 if tw != NO_EDGE else -1
+    n: Index
+    nb: Index
+    n, nb = collect_cavity(r, m, px, py, e // 3, t1, e)
+    if not has_room(r, m, nb) or segs.count >= segs.marker.shape[0]:
+        forget_cavity(r, m, n)
+        return NEED_ROOM
+    order_rim(r, m, nb, d)  # Triangle circles the new vertex from e's destination
+    rec: Index = m.seg[e]
+    half: Index = new_record(segs, segs.marker[rec], segs.source[rec], segs.ends[rec, 0], segs.ends[rec, 1])
+    v: Index = new_vertex(m, px, py, V_SEGMENT, segs.marker[rec], e0, e1, e0, split, 0.0)
+    fill_cavity(r, m, v, n, nb)
+    t: Index
+    w: Index
+    for j in range(nb):  # the halves: spokes to o and d (edge 2 of (v, o|d, x), edge 1 of (v, x, o|d))
+        t = r.fan[j]
+        for k in range(1, 3):
+            w = m.corner[3 * t + k]
+            if w == o or w == d:
+                mark_both(m, 3 * t + 3 - k, rec if w == o else half)
+    m.work[C_SEGMENT_SPLIT] += 1
+    m.work[C_STEINER] += 1
+    if r.budget > 0:
+        r.budget -= 1
+    test_fan(r, m, segs, nb, triangles)
+    # the halves themselves, on the side e was on
+    eb: Index = find_edge(m, v, d)
+    if eb >= 0:
+        check_subsegment(r, m, eb)
+    ea: Index = find_edge(m, o, v)
+    if ea >= 0:
+        check_subsegment(r, m, ea)
+    trace_row(r, T_SEGMENT, nb, n, 0, r.hsize)
+    return DONE
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def split_encroached(r: Refiner, m: Mesh, segs: Subsegments, triangles: cython.bint) -> cython.int:
+    """Split pooled encroached subsegments until none is left (or the budget
+    is spent), in passes over the pool.  Returns DONE, NEED_ROOM or
+    PRECISION."""
+    if not r.enc_busy:  # each call starts at the pool's first slot, as Triangle's does
+        r.enc_busy = True
+        r.enc_cursor = 0
+    i: Index
+    e: Index
+    u: Index
+    v: Index
+    status: cython.int
+    while r.enc_live > 0 and r.budget != 0:
+        i = r.enc_cursor
+        if i >= r.enc_fresh:  # the next pass
+            r.enc_cursor = 0
+            continue
+        if r.enc[i, 0] < 0:
+            r.enc_cursor = i + 1
+            continue
+        if trace_full(r):
+            return NEED_ROOM
+        e = enc_edge(r, m, i)
+        if e >= 0:
+            r.enc[i, 3] = m.stamp[e // 3]
+        if e >= 0 and not r.cfg.diametral:
+            u = r.enc[i, 0]
+            v = r.enc[i, 1]
+            if not chew_delete(r, m, segs, e):
+                return NEED_ROOM
+            if m.stamp[e // 3] != r.enc[i, 3] or m.corner[lnext(e)] != u:  # a deletion re-made it
+                e = find_edge(m, u, v)
+        if e >= 0:  # (else split or gone since it was pooled)
+            status = split_subsegment(r, m, segs, e, triangles)
+            if status != DONE:
+                return status
+        enc_free(r, i)
+        r.enc_cursor = i + 1
+    r.enc_busy = False
+    return DONE
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cython.int:
+    """Insert the off-center or circumcenter of handle ``h``'s triangle
+    unless it is across a subsegment or encroaches one (then the subsegment
+    is pooled).  Returns DONE or NEED_ROOM (nothing changed)."""
+    xy = m.xy
+    t: Index = h // 3
+    px: cython.double
+    py: cython.double
+    xi: cython.double
+    eta: cython.double
+    off: cython.bint
+    px, py, xi, eta, off = steiner_point(r, m, h)
+    m.work[C_CIRCUMCENTER] += 1
+    a: Index = m.corner[h]  # apex
+    b: Index = m.corner[lnext(h)]  # org
+    c: Index = m.corner[lprev(h)]  # dest
+    if (
+        px != px or py != py  # NaN
+        or (px == xy[a, 0] and py == xy[a, 1])
+        or (px == xy[b, 0] and py == xy[b, 1])
+        or (px == xy[c, 0] and py == xy[c, 1])
+    ):
+        m.work[C_DUPLICATE] += 1
+        return DONE
+    steps0: cython.longlong = m.work[C_WALK]
+    status: cython.int
+    e: Index
+    # Triangle's walk from the handle, or from the edge before it when that
+    # puts the point on the inner side of the first edge
+    status, e = precise_walk(m, lprev(h) if eta < xi else h, px, py, m.stamp.shape[0] + 64)
+    if status == LOC_FAILED:
+        status, e = line_walk(m, t, px, py, 4 * m.stamp.shape[0] + 64)
+    steps: cython.longlong = m.work[C_WALK] - steps0
+    if status == LOC_BLOCKED or (status == LOC_ON_EDGE and m.seg[e] != NO_SEG):
+        if m.seg[e] != NO_SEG and may_split(r, m, e):
+            if r.enc_live + 1 > r.enc.shape[0]:
+                return NEED_ROOM
+            enc_push(r, m, e)
+        m.work[C_REJECTED] += 1
+        trace_row(r, T_REJECTED, 0, 0, steps, r.hsize)
+        return DONE
+    if status == LOC_ON_VERTEX or (status != LOC_INSIDE and status != LOC_ON_EDGE):
+        m.work[C_DUPLICATE] += 1
+        return DONE
+    start: Index = e // 3
+    second: Index = -1
+    if status == LOC_ON_EDGE and m.twin[e] != NO_EDGE:
+        second = m.twin[e] // 3
+    n: Index
+    nb: Index
+    n, nb = collect_cavity(r, m, px, py, start, second, -1)
+    if not has_room(r, m, nb):
+        forget_cavity(r, m, n)
+        return NEED_ROOM
+    # Triangle's flips circle the new vertex from the located edge's origin
+    # (its destination when the point is on it)
+    order_rim(r, m, nb, m.corner[lprev(e)] if status == LOC_ON_EDGE else m.corner[lnext(e)])
+    # a point inside a subsegment's lens is rejected; the subsegment is split
+    encroached: Index = 0
+    for j in range(nb):
+        if r.bnd[j, 3] != NO_SEG and in_lens(r, m, r.bnd[j, 1], r.bnd[j, 2], px, py):
+            encroached += 1
+            queue_side(r, m, r.bnd[j, 4], True)
+    if encroached:
+        forget_cavity(r, m, n)
+        m.work[C_REJECTED] += 1
+        m.work[C_UNDONE] += nb
+        trace_row(r, T_REJECTED, 0, 0, steps, r.hsize)
+        return DONE
+    # attributes: barycentric in (org, dest, apex)
+    v: Index = new_vertex(m, px, py, V_FREE, 0, b, c, a, xi, eta)
+    fill_cavity(r, m, v, n, nb)
+    m.work[C_STEINER] += 1
+    if r.budget > 0:
+        r.budget -= 1
+    test_fan(r, m, segs, nb, True)
+    trace_row(r, T_OFFCENTER if off else T_CIRCUMCENTER, nb, n, steps, r.hsize)
+    return DONE
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def check_subsegments(r: Refiner, m: Mesh, edges: cython.longlong[::1]) -> cython.void:
+    """Pool the encroached ones of subsegment ``edges``; the caller made
+    room for all of them."""
+    for i in range(edges.shape[0]):
+        check_subsegment(r, m, edges[i])
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def refine(r: Refiner, m: Mesh, segs: Subsegments) -> cython.int:
+    """Triangle's refinement loop, resumable: returns DONE, NEED_ROOM (grow the
+    arrays and call again), PAUSE (call again) or PRECISION."""
+    status: cython.int
+    t: Index
+    stamp: cython.longlong
+    i: Index
+    live: Index
+    while True:
+        if r.phase == 0:  # encroached subsegments of the input
+            status = split_encroached(r, m, segs, False)
+            if status != DONE:
+                return status
+            r.phase = 1
+        if r.phase == 1:  # every triangle's quality
+            if r.hkey.shape[0] < m.nslot + 16:
+                return NEED_ROOM
+            queue_clear(r)
+            for tt in range(m.nslot):
+                if m.stamp[tt] > 0:
+                    test_triangle(r, m, segs, tt)
+            r.phase = 2
+        if trace_full(r):
+            return NEED_ROOM
+        if r.current >= 0:  # the popped triangle (again after a NEED_ROOM)
+            if queue_used(r) + 1 > r.hkey.shape[0]:  # room to queue it again
+                r.need = max(r.need, 1)
+                return NEED_ROOM
+            t = r.current
+            stamp = r.current_stamp
+            if m.stamp[t] == stamp:
+                status = split_bad_triangle(r, m, segs, 3 * t)
+                if status != DONE:
+                    return status
+            r.current = -1
+            if r.enc_live > 0:  # split the subsegments first, then try again
+                # (room: checked above, and a split leaves two spare)
+                queue_push(r, r.current_key, t, stamp)
+                status = split_encroached(r, m, segs, True)
+                if status != DONE:
+                    return status
+        if r.enc_live > 0:
+            status = split_encroached(r, m, segs, True)
+            if status != DONE:
+                return status
+        if r.hsize == 0 or r.budget == 0:
+            return DONE
+        # compact when stale entries outnumber live triangles, or before the queue must grow
+        live = m.nlive
+        if queue_used(r) > max(r.compact_at, min(2 * live + 4096, r.hkey.shape[0] - 1024)):
+            queue_compact(r, m)
+            r.compact_at = 2 * queue_used(r) + 4096  # amortised: never twice in a row
+        if r.taken >= PAUSE_EVERY:
+            r.taken = 0
+            return PAUSE
+        r.taken += 1
+        i = queue_pop(r)
+        t = r.htri[i]
+        m.work[C_QUEUE_POP] += 1
+        if m.stamp[t] != r.hstamp[i]:
+            m.work[C_STALE_POP] += 1
+            continue
+        r.current_key = r.hkey[i]
+        r.current = t
+        r.current_stamp = r.hstamp[i]
+
+
+def tally_encroached(r: Refiner, m: Mesh, segs: Subsegments) -> None:
+    """Pool every encroached subsegment, in the order the subsegments were
+    made (Triangle's pool order), each edge once."""
+    a = m.arrays()
+    n = m.nslot
+    seg, corner, twin, stamp, xy = a["seg"], a["corner"], a["twin"], a["stamp"], a["xy"]
+    e = np.flatnonzero(seg[: 3 * n] != NO_SEG)
+    e = e[stamp[e // 3] > 0]
+    # one side per subsegment: the one its record's ends run along (the
+    # edge it was made on), else the only one
+    rec = seg[e]
+    k = e % 3
+    org, dest = corner[e - k + (k + 1) % 3], corner[e - k + (k + 2) % 3]
+    ends = np.asarray(segs.ends)[rec]
+    along = np.einsum("ij,ij->i", xy[dest] - xy[org], xy[ends[:, 1]] - xy[ends[:, 0]]) > 0
+    first = along | (twin[e] == NO_EDGE)
+    e = e[first]
+    e = e[np.unique(seg[e], return_index=True)[1]]
+    check_subsegments(r, m, np.ascontiguousarray(e, dtype=np.int64))
