@@ -585,24 +585,24 @@ def bench(name: str, repeat: int, memory: bool, *, strategies: list[str] | None 
 
 PROFILED = {
     # module attribute -> phase name (wrapped only for the duration of one profiled run)
-    ("instrument.driver", "_validate"): "validate input (Python)",
-    ("instrument.driver", "start"): "Delaunay triangulation (sort + insertion kernel)",
-    ("instrument.driver", "clean_segments"): "clean segments (Python)",
-    ("instrument.driver", "recover_segments"): "segment recovery (CDT kernel)",
-    ("instrument.driver", "carve"): "holes, concavities, regions",
-    ("instrument.driver", "enclose_hull"): "enclose hull",
-    ("instrument.quality", "new_refiner"): "refinement setup (allocate arrays)",
-    ("instrument.cdt", "build_vertex_edges"): "refinement setup (vertex -> edge map kernel)",
+    ("instrument.pipeline", "validate"): "validate input (Python)",
+    ("instrument.pipeline", "delaunay"): "Delaunay triangulation (sort + kernel)",
+    ("instrument.pipeline", "clean_segments"): "clean segments (Python)",
+    ("instrument.pipeline", "recover_segments"): "segment recovery (kernel)",
+    ("instrument.pipeline", "carve"): "holes, concavities, regions",
+    ("instrument.pipeline", "enclose_hull"): "enclose hull",
+    ("instrument.refine", "new_refiner"): "refinement setup (allocate arrays)",
+    ("instrument.refine", "build_vertex_edges"): "refinement setup (vertex -> edge map kernel)",
     ("instrument.refine", "tally_encroached"): "refinement setup (encroached subsegments kernel)",
     ("instrument.refine", "refine"): "refinement kernel",
-    ("instrument.quality", "grow_refiner"): "refinement: growing arrays",
-    ("instrument.driver", "_assemble"): "output assembly (_assemble)",
+    ("instrument.refine", "grow_refiner"): "refinement: growing arrays",
+    ("instrument.pipeline", "assemble"): "output assembly",
 }
 
 
 def profile(name: str, strategy: str = "triangle", repeat: int = 3) -> list[tuple[str, float, int]]:
     """Phases of ``instrument.triangulate`` on one workload, by wrapping the
-    pipeline's pieces with timers (numba kernels are opaque to cProfile):
+    pipeline's pieces with timers (compiled kernels are opaque to cProfile):
     [(phase, best seconds, calls)], the total first, then each phase."""
     import importlib
 

@@ -69,7 +69,6 @@ def _run_checked(cases: list[dict], timeout: float = 600) -> dict:
     return json.loads(proc.stdout)
 
 
-@pytest.mark.xfail(strict=True, reason="issue 18.1: the numba refinement stage overruns its per-triangle tables (goes with its port)")
 def test_meshing_paths_stay_in_bounds():
     cases = _cases()
     out = _run_checked(cases)
