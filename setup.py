@@ -49,7 +49,15 @@ DIRECTIVES = {
 }
 FLAGS = ["-O3", "-ffp-contract=off", "-fno-math-errno"] + (["-O1"] if CHECKED else [])
 
+# Cython's support code for typed memoryviews (tens of thousands of lines of
+# C) is generated once, into this module, instead of into every kernel module.
+SHARED = "instrument._cython_shared"
 extensions = [Extension(name, [path], extra_compile_args=FLAGS) for name, path in kernel_modules()]
+extensions.append(Extension(SHARED, sources=["src/instrument/_cython_shared.c"], extra_compile_args=FLAGS))
+JOBS = os.cpu_count() or 1
 setup(
-    ext_modules=cythonize(extensions, compiler_directives=DIRECTIVES, nthreads=os.cpu_count() or 1, quiet=True),
+    ext_modules=cythonize(
+        extensions, compiler_directives=DIRECTIVES, nthreads=JOBS, quiet=True, shared_utility_qualified_name=SHARED
+    ),
+    options={"build_ext": {"parallel": JOBS}},  # the C compiler on every core, as cythonize
 )
