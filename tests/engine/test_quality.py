@@ -136,42 +136,6 @@ def test_triangle_buckets_by_hand():
     assert triangle_bucket(1e-6) > triangle_bucket(1e-3) > triangle_bucket(1.0) > triangle_bucket(1e3)
 
 
-def _queue(strategy: str, capacity: int = 64):
-    """A refiner holding only a bad-triangle queue, and a mesh of 16 slots."""
-    from instrument.core.mesh import Mesh
-    from instrument.refine.order import strategy_id
-    from instrument.refine.state import Config, Refiner
-    from instrument.switches import parse
-
-    cfg = Config(parse("q"), strategy_id(strategy), True, False)
-    r = Refiner(cfg, budget=-1, slots=0, queue=capacity, records=0, trace=False)
-    return r, Mesh(np.zeros((3, 2)), 16)
-
-
-@pytest.mark.parametrize("strategy", ["triangle", "fifo"])
-def test_bucket_queue_serves_finest_first_fifo_within_and_compacts_in_order(strategy):
-    # Triangle's queue (spec 4.8.4): squared shortest edges 1.3 and 1.0 share
-    # bucket 2047, 0.5 is in 2049, 0.25 in 2051; the highest bucket goes first.
-    from instrument.refine.queues import queue_compact, queue_pop, queue_push, queue_used
-
-    r, m = _queue(strategy)
-    stamp = np.asarray(m.stamp)
-    keys = [1.3, 0.5, 1.0, 0.25, 0.5, 2.0, 0.25]
-    for t, key in enumerate(keys):
-        queue_push(r, -float(triangle_bucket(key)) if strategy == "triangle" else 0.0, t, 1)
-    # triangles 4 and 0 die: compaction must drop them and keep the order of the rest
-    stamp[:7] = [0, 1, 1, 1, 0, 1, 1]
-    queue_compact(r, m)
-    order = [int(r.htri[queue_pop(r)]) for _ in range(r.hsize)]
-    assert order == ([3, 6, 1, 2, 5] if strategy == "triangle" else [1, 2, 3, 5, 6])
-    assert queue_used(r) == (5 if strategy == "triangle" else 0)  # served entries stay in the log
-    stamp[:7] = 1
-    queue_compact(r, m)  # until the next compaction
-    assert queue_used(r) == 0
-    queue_push(r, -2047.0 if strategy == "triangle" else 0.0, 9, 1)
-    assert int(r.htri[queue_pop(r)]) == 9 and r.hsize == 0
-
-
 def _areas(r):
     p = r["vertices"][r["triangles"]]
     u, v = p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]

@@ -1,0 +1,98 @@
+"""The bad-triangle queue and the encroached-subsegment pool (instrument.refine.queues, encroach)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from instrument.core.mesh import Mesh
+from instrument.refine.encroach import enc_edge, enc_free, enc_push, in_lens
+from instrument.refine.order import strategy_id, triangle_bucket
+from instrument.refine.queues import queue_clear, queue_compact, queue_pop, queue_push, queue_used
+from instrument.refine.state import Config, Refiner
+from instrument.switches import parse
+from meshkit import triangulated
+
+
+def _queue(strategy: str, capacity: int = 64):
+    """A refiner holding only a bad-triangle queue, and a mesh of 16 slots."""
+    cfg = Config(parse("q"), strategy_id(strategy), True, False)
+    r = Refiner(cfg, budget=-1, slots=0, queue=capacity, records=0, trace=False)
+    return r, Mesh(np.zeros((3, 2)), 16)
+
+
+@pytest.mark.parametrize("strategy", ["triangle", "fifo"])
+def test_bucket_queue_serves_finest_first_fifo_within_and_compacts_in_order(strategy):
+    # Triangle's queue (spec 4.8.4): squared shortest edges 1.3 and 1.0 share
+    # bucket 2047, 0.5 is in 2049, 0.25 in 2051; the highest bucket goes first.
+    r, m = _queue(strategy)
+    stamp = np.asarray(m.stamp)
+    keys = [1.3, 0.5, 1.0, 0.25, 0.5, 2.0, 0.25]
+    for t, key in enumerate(keys):
+        queue_push(r, -float(triangle_bucket(key)) if strategy == "triangle" else 0.0, t, 1)
+    # triangles 4 and 0 die: compaction must drop them and keep the order of the rest
+    stamp[:7] = [0, 1, 1, 1, 0, 1, 1]
+    queue_compact(r, m)
+    order = [int(r.htri[queue_pop(r)]) for _ in range(r.hsize)]
+    assert order == ([3, 6, 1, 2, 5] if strategy == "triangle" else [1, 2, 3, 5, 6])
+    assert queue_used(r) == (5 if strategy == "triangle" else 0)  # served entries stay in the log
+    stamp[:7] = 1
+    queue_compact(r, m)  # until the next compaction
+    assert queue_used(r) == 0
+    queue_push(r, -2047.0 if strategy == "triangle" else 0.0, 9, 1)
+    assert int(r.htri[queue_pop(r)]) == 9 and r.hsize == 0
+
+
+
+@pytest.mark.parametrize("strategy", ["worst-angle", "largest", "lifo", "random"])
+def test_heap_serves_smallest_key_first_and_ties_in_queueing_order(strategy):
+    r, _ = _queue(strategy)
+    keys = [3.0, 1.0, 2.0, 1.0, 0.5, 1.0]
+    for t, key in enumerate(keys):
+        queue_push(r, key, t, 1)
+    order = [int(r.htri[queue_pop(r)]) for _ in range(len(keys))]
+    assert order == [4, 1, 3, 5, 2, 0]
+    assert r.hsize == 0 and queue_used(r) == 0
+
+
+def test_queue_clear_empties_both_kinds():
+    for strategy in ("triangle", "fifo"):
+        r, _ = _queue(strategy)
+        queue_push(r, -2047.0 if strategy == "triangle" else 0.0, 3, 1)
+        queue_clear(r)
+        assert r.hsize == 0 and queue_used(r) == 0 and r.top_bucket == -1
+
+
+def _refiner(o: str = "q30", records: int = 8):
+    cfg = Config(parse(o), strategy_id("triangle"), True, False)
+    return Refiner(cfg, budget=-1, slots=0, queue=16, records=records, trace=False)
+
+
+def test_lens_is_narrower_than_the_diametral_circle():
+    m = triangulated([[0, 0], [2, 0], [1, 0.5], [1, 3]])
+    r, rd = _refiner("q30"), _refiner("q30D")
+    # (1, 0.5) sees (0, 0)-(2, 0) at 2 atan(2) = 126.9 degrees, (1, 0.9) at 96:
+    # both inside the diametral circle (> 90), only the first inside the
+    # 30-degree lens (> 180 - 2 x 30 = 120)
+    assert in_lens(rd, m, 0, 1, 1.0, 0.5)
+    assert in_lens(r, m, 0, 1, 1.0, 0.5)
+    assert in_lens(rd, m, 0, 1, 1.0, 0.9) and not in_lens(r, m, 0, 1, 1.0, 0.9)  # 96 degrees
+    assert not in_lens(rd, m, 0, 1, 1.0, 1.1)
+
+
+def test_pool_reuses_the_slot_freed_last_and_finds_a_moved_edge():
+    m = triangulated([[0, 0], [2, 0], [2, 2], [0, 2]])
+    r = _refiner()
+    edges = [e for e in range(3 * m.nslot) if m.arrays()["stamp"][e // 3] > 0][:3]
+    for e in edges:
+        enc_push(r, m, e)
+    assert r.enc_live == 3 and r.enc_fresh == 3
+    enc_free(r, 0)
+    enc_free(r, 2)
+    enc_push(r, m, edges[0])
+    assert np.flatnonzero(np.asarray(r.enc)[:3, 0] >= 0).tolist() == [1, 2]  # slot 0 is still free
+    assert np.asarray(r.enc)[2, 2] == edges[0]  # the slot freed last (2) was taken
+    # not a subsegment: the pool's record says it is gone
+    assert enc_edge(r, m, 2) == -1
+    m.arrays()["seg"][edges[0]] = 0
+    assert enc_edge(r, m, 2) == edges[0]
