@@ -430,8 +430,7 @@ def _run_cli(argv: list[str]) -> int:
     if not g.tasks:
         print("Error: no tasks (no readable input, or no switches apply)", file=sys.stderr)
         return 1
-    if "ours" in engine_names:
-        _warm_here(g)
+    warm_here(g)
     try:
         got = run(g, args.dataset, scheduler=args.scheduler, workers=args.workers, sequential=args.sequential,
                   redo=[s for s in args.redo.split(",") if s], progress=not args.no_progress)
@@ -452,7 +451,7 @@ def _run_cli(argv: list[str]) -> int:
     return 0
 
 
-def _warm_here(g: Grid) -> None:
+def warm_here(g: Grid) -> None:
     """Compile our kernels once here (numba caches them on disk), so that no
     task spends its time limit compiling."""
     from .ours_engine import warm_up
