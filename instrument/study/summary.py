@@ -5,7 +5,8 @@ run in progress, so a summary can be made again at any time, of a sweep
 that was interrupted, resumed or run elsewhere.
 
 * ``summary.md`` / ``summary.csv``: per switches and engine (ours per
-  strategy): how many rows of each status; median output vertices per input
+  strategy): how many rows of each status; how many meshes miss the ``q``
+  angle bound where Triangle meets it ("below q"); median output vertices per input
   vertex; median work per output vertex (triangles created, incircle tests);
   median size against Triangle's on the same input (output vertices, ours /
   Triangle's); total wall time of the engine and of the tasks; largest peak
@@ -30,8 +31,9 @@ from pathlib import Path
 from . import dataset
 
 STATUSES = ("ok", "timeout", "crash", "memory", "error", "unsupported", "unavailable", "skipped")
-HEADER = ("switches", "engine", "rows", *STATUSES, "out/in vertices", "created/vertex", "incircle/vertex",
+HEADER = ("switches", "engine", "rows", *STATUSES, "below q", "out/in vertices", "created/vertex", "incircle/vertex",
           "vertices/Triangle's", "engine s", "task s", "peak MiB")
+ANGLE_TOLERANCE = 1e-6  # degrees
 
 
 def label(row: dict) -> str:
@@ -52,6 +54,14 @@ def triangle_reference(rows: list[dict]) -> dict[tuple, dict]:
     return {(r["input"], r["digest"], r["switches"]): r for r in rows if r["engine"] == "triangle" and r["status"] == "ok"}
 
 
+def misses_bound(row: dict) -> bool:
+    """Is the row's smallest angle below its ``q`` bound?"""
+    from instrument.switches import parse
+
+    o = parse(row.get("ran_switches") or row["switches"])
+    return bool(o.q) and row.get("min_angle") is not None and row["min_angle"] < o.min_angle - ANGLE_TOLERANCE
+
+
 def aggregate(rows: list[dict]) -> list[dict]:
     """One line per (switches, engine label), in a stable order."""
     ref = triangle_reference(rows)
@@ -65,6 +75,8 @@ def aggregate(rows: list[dict]) -> list[dict]:
         line = {"switches": sw, "engine": lab, "rows": len(rs)}
         for s in STATUSES:
             line[s] = sum(r["status"] == s for r in rs)
+        line["below q"] = sum(misses_bound(r) and not misses_bound(ref.get((r["input"], r["digest"], r["switches"]), r))
+                              for r in ok if r["engine"] != "triangle")
         line["out/in vertices"] = _median(_per(r["vertices"], r["input_vertices"]) for r in ok)
         line["created/vertex"] = _median(_per(r["triangles_created"], r["vertices"]) for r in ok)
         line["incircle/vertex"] = _median(_per(r["incircle_tests"], r["vertices"]) for r in ok)
@@ -95,7 +107,7 @@ def markdown(rows: list[dict], catalog: list[dict], source: str = "") -> str:
                  "times are sums.  vertices/Triangle's: output vertices over Triangle's on the same input and switches.")
     lines.append("")
     agg = aggregate(rows)
-    shown = [h for h in HEADER if h not in STATUSES or any(a[h] for a in agg)]
+    shown = [h for h in HEADER if h not in STATUSES or h == "ok" or any(a[h] for a in agg)]
     lines.append("| " + " | ".join(shown) + " |")
     lines.append("|" + "|".join("---" if h in ("switches", "engine") else "---:" for h in shown) + "|")
     for a in agg:

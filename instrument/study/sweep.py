@@ -232,10 +232,7 @@ def connect(scheduler: str | None = None, workers: int | None = None):
                     f"{len(daemonic)} worker(s) of {scheduler} are daemonic processes, which cannot start the "
                     "engine's isolated process: start them with DASK_DISTRIBUTED__WORKER__DAEMON=False"
                 )
-            try:
-                yield client
-            finally:
-                client.run(isolate.shutdown)  # the engines' processes end with the sweep, not with the workers
+            yield client  # the workers keep their engines' processes, warm, for the next sweep
         return
     dask.config.set({"distributed.worker.daemon": False})  # global: a restarted worker reads it again
     n = workers or os.cpu_count() or 1
@@ -244,7 +241,7 @@ def connect(scheduler: str | None = None, workers: int | None = None):
         try:
             yield client
         finally:
-            client.run(isolate.shutdown)
+            client.run(isolate.shutdown)  # the engines' processes end before their workers do
 
 
 class Progress:
@@ -437,6 +434,9 @@ def _run_cli(argv: list[str]) -> int:
     except SweepError as exc:
         print(f"Error: {exc}", file=sys.stderr)
         return 1
+    except KeyboardInterrupt:
+        print(f"Interrupted: the rows that finished are in {args.dataset}; the same command resumes.", file=sys.stderr)
+        return 130
     statuses = ", ".join(f"{k} {v}" for k, v in sorted(got.statuses.items())) or "nothing to run"
     print(f"{len(g.tasks)} tasks: {got.already} already in {args.dataset}, ran {got.ran}, skipped {got.skipped} "
           f"({statuses}) in {got.wall_s:.1f} s", flush=True)
