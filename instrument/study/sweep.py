@@ -1,9 +1,9 @@
 """A grid of inputs x switches x strategies x engines, run as tasks on dask.distributed.
 
-    python -m instrument.study.sweep samples /work/shared/corpus --switches pq20,pq30 --strategies all \\
+    python -m instrument.study.sweep samples corpus/ --switches pq20,pq30 --strategies all \\
         --engines ours,triangle --dataset results/
     python -m instrument.study.sweep quadratic:n=100,200,400:alpha=20,30 --switches 'pq{alpha}' --dataset quad/
-    python -m instrument.study.sweep ... --scheduler tcp://10.0.0.5:8786     # an existing cluster
+    python -m instrument.study.sweep ... --scheduler tcp://HOST:8786          # an existing cluster
     python -m instrument.study.sweep summary results/                          # tables and plots from a dataset
 
 By default the tasks run on an embedded ``LocalCluster`` (process workers, one
@@ -236,7 +236,7 @@ def connect(scheduler: str | None = None, workers: int | None = None):
         return
     dask.config.set({"distributed.worker.daemon": False})  # global: a restarted worker reads it again
     n = workers or os.cpu_count() or 1
-    with LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address=None,
+    with LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address=":0",
                       silence_logs=logging.ERROR) as cluster, Client(cluster) as client:
         try:
             yield client

@@ -25,7 +25,7 @@ HANG = "study_plugin_engines:hang"
 def cluster():
     """A LocalCluster of 2 process workers, as ``--scheduler`` users would run one."""
     dask.config.set({"distributed.worker.daemon": False})
-    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None,
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0",
                                   silence_logs=logging.ERROR) as c:
         yield c
 
@@ -165,3 +165,19 @@ def test_newest_row_of_a_key_wins_and_compact_keeps_it(tmp_path):
 def test_summary_command_on_an_empty_folder_is_one_error_line(tmp_path, capsys):
     assert sweep.main(["summary", str(tmp_path)]) == 1
     assert capsys.readouterr().err.startswith("Error:")
+
+
+def test_memory_limit_makes_a_memory_outcome():
+    from instrument.study import isolate
+
+    got = isolate.call(np.ones, ((400_000_000,),), memory_limit=1024 * 2**20)  # 3.2 GB under a 1 GiB limit
+    assert got.status == "memory" and "MemoryError" in got.message
+    assert isolate.call(np.ones, ((1000,),), memory_limit=1024 * 2**20).status == "ok"  # the next call is fine
+
+
+def test_a_cluster_of_daemonic_workers_is_refused(tmp_path):
+    with dask.config.set({"distributed.worker.daemon": True}), \
+            distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=True, dashboard_address=":0",
+                                     silence_logs=logging.ERROR) as daemonic:
+        with pytest.raises(sweep.SweepError, match="DASK_DISTRIBUTED__WORKER__DAEMON=False"):
+            sweep.run(small_grid(), tmp_path / "rows", scheduler=daemonic.scheduler_address)
