@@ -39,7 +39,7 @@ statistics, which come from one extra untimed run of Triangle with ``V``
 CGAL (the ``cgal`` package's SWIG bindings) runs where it has a counterpart:
 the Delaunay workloads through ``Delaunay_triangulation_2`` (one bulk insert,
 which sorts the points spatially), the others through Mesh_2 exactly as
-``scripts/compare.py`` runs it (``instrument.comparison``: constrained Delaunay
+``scripts/compare.py`` runs it (``instrument.study.cgal_engine``: constrained Delaunay
 triangulation, holes as seeds, ``q<angle>`` -> shape bound ``b = sin^2(angle)``,
 ``a<area>`` -> edge bound ``S = sqrt(4 area / sqrt 3)``).  CGAL's time runs
 from the numpy array to the finished triangulation, so it includes making one
@@ -177,7 +177,7 @@ def run_engine(engine: str, data: dict, opts: str, strategy: str = "triangle"):
 
         return instrument.triangulate(data, opts, strategy=strategy)
     if engine == "triangle":
-        from instrument.comparison import run_triangle
+        from instrument.study.triangle_engine import run_triangle
 
         return run_triangle(data, opts, repeat=1)[0]
     if engine == "cgal":
@@ -187,12 +187,12 @@ def run_engine(engine: str, data: dict, opts: str, strategy: str = "triangle"):
 
 def warm_up(engine: str, opts: str, strategy: str = "triangle") -> None:
     """Compile (or load from numba's cache) every kernel the switches use, on a
-    tiny input; import the other engines (and ``instrument.comparison``, which
-    every runner goes through), so that nothing measured later imports."""
-    from instrument import comparison
+    tiny input; import the other engines (and ``instrument.study``'s runners,
+    which every runner goes through), so that nothing measured later imports."""
+    from instrument.study import ours_engine, triangle_engine  # noqa: F401
 
     if engine == "ours":
-        comparison._warm_up(opts, strategy)
+        ours_engine.warm_up(opts, strategy)
     elif engine == "triangle":
         import triangle  # noqa: F401
     elif engine == "cgal":
@@ -223,12 +223,12 @@ def run_cgal(data: dict, opts: str) -> CgalRun:
     """CGAL's counterpart of one workload, without the read-out.
 
     No switches (a Delaunay triangulation): ``Delaunay_triangulation_2`` with
-    one bulk insert.  Otherwise Mesh_2 as ``instrument.comparison.run_cgal``
+    one bulk insert.  Otherwise Mesh_2 as ``instrument.study.cgal_engine.run_cgal``
     does it (its building blocks, so the criteria and the domain are the same
     as in ``scripts/compare.py``)."""
     from CGAL.CGAL_Kernel import Point_2
 
-    from instrument.comparison import _cgal_build, cgal_criteria
+    from instrument.study.cgal_engine import cgal_build, cgal_criteria
     from instrument.switches import parse
 
     xy = np.asarray(data["vertices"], dtype=np.float64).reshape(-1, 2)
@@ -248,7 +248,7 @@ def run_cgal(data: dict, opts: str) -> CgalRun:
     segs = None if segs is None or len(segs) == 0 else np.asarray(segs).reshape(-1, 2)
     holes = data.get("holes") if (o.p and not o.O) else None
     holes = [] if holes is None else np.asarray(holes, dtype=np.float64).reshape(-1, 2)
-    cdt = _cgal_build(M, Point_2, xy, segs, not o.p or o.c)
+    cdt = cgal_build(M, Point_2, xy, segs, not o.p or o.c)
     mesher = M.Default_Delaunay_mesher_2(cdt, M.Delaunay_mesh_size_criteria_2(b, size))
     mesher.set_seeds([Point_2(float(x), float(y)) for x, y in holes], False)
     t0 = time.perf_counter()
@@ -460,7 +460,7 @@ def new_row(name: str, w: Workload, strategy: str) -> dict:
 
 
 def available_strategies() -> list[str]:
-    from instrument.comparison import available_strategies as names
+    from instrument.study.ours_engine import available_strategies as names
 
     return names()
 
@@ -470,7 +470,7 @@ def bench(name: str, repeat: int, memory: bool, *, strategies: list[str] | None 
     """Time one workload; one row per strategy of ours.
 
     On a strategy workload (``sweep``) with ``timeout > 0`` each of our runs
-    happens in a forked child (``instrument.comparison.run_ours_isolated``,
+    happens in a process of its own (``instrument.study.ours_engine.run_ours_isolated``,
     timed inside the child like an in-process run) that is killed after
     ``timeout`` seconds; a strategy that times out is not run again."""
     w = WORKLOADS[name]
@@ -478,7 +478,7 @@ def bench(name: str, repeat: int, memory: bool, *, strategies: list[str] | None 
         return bench_cli(name, w, repeat, memory)
     strategies = (strategies or available_strategies()) if w.sweep else ["triangle"]
     isolated = w.sweep and timeout > 0
-    from instrument.comparison import has_cgal
+    from instrument.study.cgal_engine import has_cgal
 
     cgal = cgal and w.cgal and has_cgal()
     data = w.make()
@@ -500,7 +500,7 @@ def bench(name: str, repeat: int, memory: bool, *, strategies: list[str] | None 
                 continue
             gc.collect()
             if engine == "ours" and isolated:
-                from instrument.comparison import EngineTimeout, run_ours_isolated
+                from instrument.study.ours_engine import EngineTimeout, run_ours_isolated
 
                 try:
                     out, counts, wall = run_ours_isolated(data, w.opts, strategy, repeat=1, timeout=timeout)
@@ -526,7 +526,7 @@ def bench(name: str, repeat: int, memory: bool, *, strategies: list[str] | None 
             del out
     tri_stats = {}
     if stats:
-        from instrument.comparison import triangle_statistics
+        from instrument.study.triangle_engine import triangle_statistics
 
         gc.collect()
         tri_stats = triangle_statistics(data, w.opts)[1]
