@@ -248,11 +248,6 @@ def version() -> str:
 
 def console() -> int:
     """The ``ruppert`` command: ``main`` in a process of its own."""
-    # When numba loads its first kernel it probes for BLAS by importing all of
-    # scipy.linalg, if scipy is installed (0.1-0.4 s of a 0.9-1.5 s run on A.poly here).  The
-    # engine never calls BLAS, and this process runs nothing else, so the probe
-    # is answered "no" at once.
-    sys.modules.setdefault("scipy.linalg", None)
     return main()
 
 
