@@ -449,3 +449,9 @@ def test_statistics_equal_triangles_with_our_engine(name, switches, tmp_path, mo
 def test_phase_line_names_the_delaunay_method_that_ran(workdir, capsys, switch, method):
     assert cli.main([f"-pV{switch}", "A.poly"]) == 0
     assert f"Constructing Delaunay triangulation by {method} method.\n" in capsys.readouterr().out
+
+
+def test_docs_cli_md_holds_the_help_text():
+    """docs/cli.md quotes ``ruppert -h``; they must not drift apart."""
+    doc = (Path(__file__).resolve().parents[2] / "docs" / "cli.md").read_text()
+    assert cli.LONG_HELP.rstrip("\n") in doc
