@@ -34,8 +34,11 @@ class Mesher:
     vtri: np.ndarray  # (V,) int64 an edge leaving each vertex
     state: np.ndarray = field(default_factory=lambda: np.array([12345], dtype=np.int64))
     warnings: list[str] = field(default_factory=list)
-    region_attr: np.ndarray | None = None  # per triangle slot, with -A
-    region_area: np.ndarray | None = None  # per triangle slot, with a bare -a
+    # Per triangle slot, as long as the mesh's slot arrays: ``grow`` widens
+    # them with the mesh (and the refiner works on these very arrays), so no
+    # kernel can index one past its end.
+    region_attr: np.ndarray | None = None  # with -A (with -r: the input triangle each descends from)
+    region_area: np.ndarray | None = None  # with a bare -a; <= 0: no bound
     dead: np.ndarray | None = None  # vertices refinement deleted (not output)
 
     @property
@@ -62,6 +65,13 @@ class Mesher:
             self.vtri = _widen(self.vtri, cap, -1)
         if spare_triangles(m) < triangles:
             m = grow_triangles(m, m.stamp.shape[0] + triangles)
+        # every per-triangle table grows here, with the mesh: a table left at
+        # its old length let the refiner write past its end (issue 18 item 1)
+        slots = m.stamp.shape[0]
+        if self.region_attr is not None and self.region_attr.shape[0] < slots:
+            self.region_attr = _widen(self.region_attr, slots, 0.0)
+        if self.region_area is not None and self.region_area.shape[0] < slots:
+            self.region_area = _widen(self.region_area, slots, -1.0)
         if int(self.segs.size[cdt.R_NREC]) + records > self.segs.marker.shape[0]:
             self.segs = cdt.grow_segs(self.segs, int(self.segs.size[cdt.R_NREC]) + records)
         self.m = m

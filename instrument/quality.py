@@ -56,9 +56,7 @@ def new_refiner(
     par[rf.P_OFFCONSTANT] = 0.475 * math.sqrt((1.0 + math.cos(theta)) / (1.0 - math.cos(theta))) if theta > 0 else 0.0
     par[rf.P_MAXAREA] = o.max_area
     vtype = np.zeros(nvcap, dtype=np.int8)
-    # per-slot bounds and attributes only where there are some: 16 bytes a triangle otherwise
-    area = ms.region_area if ms.region_area is not None else np.zeros(0)
-    attr = ms.region_attr if ms.region_attr is not None else np.zeros(0)
+    area, attr = _region_tables(ms)
     return rf.Refiner(
         ipar=ipar,
         par=par,
@@ -81,11 +79,29 @@ def new_refiner(
     )
 
 
+def _region_tables(ms: Mesher) -> tuple[np.ndarray, np.ndarray]:
+    """The Mesher's per-slot area bounds and attributes, which the kernel
+    reads and writes in place: no rows when the run has none (16 bytes a
+    triangle saved).  Kernels index them by any slot of the mesh, so they
+    must be exactly as long as the mesh's slot arrays; ``Mesher.grow``
+    keeps them so."""
+    slots = ms.m.stamp.shape[0]
+    tables = []
+    for table in (ms.region_area, ms.region_attr):
+        if table is None:
+            table = np.zeros(0)
+        elif table.shape[0] != slots:  # an invariant: better an error than a write past the end
+            raise RuntimeError(f"internal error: a per-triangle table has {table.shape[0]} rows for {slots} slots")
+        tables.append(table)
+    return tables[0], tables[1]
+
+
 def grow_refiner(ms: Mesher, r: rf.Refiner) -> rf.Refiner:
     """After the kernel's NEED_ROOM: grow (doubling) whatever it ran out of,
     and only that, in the mesh and in ``r``; returns the grown refiner."""
     need = max(64, int(r.ipar[rf.I_NEED]))
     r.ipar[rf.I_NEED] = 0
+    _hand_back(ms, r)  # so that ms.grow widens the tables the kernel filled
     ms.grow(vertices=16, triangles=need, records=16)
     slots = ms.m.stamp.shape[0]
     nvcap = ms.m.xy.shape[0]
@@ -103,9 +119,8 @@ def grow_refiner(ms: Mesher, r: rf.Refiner) -> rf.Refiner:
     if trace.shape[0] and r.ipar[rf.I_NTRACE] + 64 > trace.shape[0]:
         grown["trace"] = _widen(trace, 2 * trace.shape[0], 0)
     per_vertex = {"vtype": 0, "vslot": -1}
-    per_slot = {"area": -1.0, "attr": 0.0}
     grown |= {k: _widen(getattr(r, k), nvcap, fill) for k, fill in per_vertex.items() if getattr(r, k).shape[0] < nvcap}
-    grown |= {k: _widen(getattr(r, k), slots, fill) for k, fill in per_slot.items() if 0 < getattr(r, k).shape[0] < slots}
+    grown["area"], grown["attr"] = _region_tables(ms)
     # Cavity scratch holds nothing between steps (a NEED_ROOM step changed
     # nothing and starts again), and ``seen`` is all zero then: fresh zeros,
     # which the OS maps lazily, instead of copies that touch every page.
@@ -114,6 +129,15 @@ def grow_refiner(ms: Mesher, r: rf.Refiner) -> rf.Refiner:
         if a.shape[0] < slots:
             grown[k] = np.zeros((slots,) + a.shape[1:], dtype=a.dtype)
     return r._replace(**grown)
+
+
+def _hand_back(ms: Mesher, r: rf.Refiner) -> None:
+    """Give the Mesher the refiner's current per-slot tables (the same
+    arrays unless a growth replaced one)."""
+    if ms.region_area is not None:
+        ms.region_area = r.area
+    if ms.region_attr is not None:
+        ms.region_attr = r.attr
 
 
 def run(
@@ -215,10 +239,7 @@ def finish(ms: Mesher, r: rf.Refiner, user: Callable | None = None) -> rf.Refine
                 f"  (segment ({xy[a, 0]:.12g}, {xy[a, 1]:.12g}) to ({xy[b, 0]:.12g}, {xy[b, 1]:.12g}))"
             )
         r = grow_refiner(ms, r)
-    if ms.region_area is not None:
-        ms.region_area = r.area
-    if ms.region_attr is not None:
-        ms.region_attr = r.attr
+    _hand_back(ms, r)
     ms.dead = np.flatnonzero(r.vtype[: ms.n_vertices] == rf.V_DEAD)
     return r
 
