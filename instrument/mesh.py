@@ -217,3 +217,20 @@ def live_triangles(m: Mesh, ghosts: bool = False) -> np.ndarray:
         c = m.corner[: 3 * n].reshape(-1, 3)
         live &= (c >= 0).all(axis=1)
     return np.flatnonzero(live).astype(np.int64)
+
+
+def rotate_corners(m: Mesh, shift: int) -> None:
+    """Renumber every triangle's corners in place: new corner ``k`` is old
+    corner ``(k + shift) % 3`` (so each triangle keeps its orientation),
+    with its edges' twins and subsegments.  Edge ids held elsewhere (a
+    vertex's edge, queued edges) are invalid afterwards."""
+    n = int(m.size[S_NSLOT])
+    if n == 0 or shift % 3 == 0:
+        return
+    k = np.arange(3 * n) % 3
+    old = np.arange(3 * n) - k + (k + shift) % 3  # the old edge each new edge id takes over
+    twin = m.twin[old]
+    j = twin % 3
+    m.twin[: 3 * n] = np.where(twin >= 0, twin - j + (j - shift) % 3, twin)
+    m.corner[: 3 * n] = m.corner[old]
+    m.seg[: 3 * n] = m.seg[old]

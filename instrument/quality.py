@@ -10,7 +10,7 @@ import numpy as np
 
 from . import cdt
 from . import refine as rf
-from .mesh import S_NSLOT
+from .mesh import S_NSLOT, rotate_corners
 from .pslg import Mesher, _widen
 from .strategies import strategy_id
 from .switches import Options
@@ -74,6 +74,7 @@ def new_refiner(
         seen=np.zeros(slots, dtype=np.int8),
         bnd=np.zeros((slots, 5), dtype=np.int64),
         bval=np.zeros((slots, 2)),
+        carry=np.zeros(slots),
         vslot=np.full(nvcap, -1, dtype=np.int64),
         trace=np.zeros((1024 if trace else 0, 5), dtype=np.int64),
     )
@@ -124,7 +125,7 @@ def grow_refiner(ms: Mesher, r: rf.Refiner) -> rf.Refiner:
     # Cavity scratch holds nothing between steps (a NEED_ROOM step changed
     # nothing and starts again), and ``seen`` is all zero then: fresh zeros,
     # which the OS maps lazily, instead of copies that touch every page.
-    for k in ("cav", "fan", "seen", "bnd", "bval"):
+    for k in ("cav", "fan", "seen", "bnd", "bval", "carry"):
         a = getattr(r, k)
         if a.shape[0] < slots:
             grown[k] = np.zeros((slots,) + a.shape[1:], dtype=a.dtype)
@@ -162,9 +163,23 @@ def run(
     user = triunsuitable if o.u else None
     _presize(ms, o)
     r = new_refiner(ms, o, strategy, steiner, trace, user is not None)  # every vertex so far: V_INPUT (0)
+    # The refiner splits and tests a triangle from handle 3 t (org, dest,
+    # apex = corners 1, 2, 0), the handle Triangle queues for the triangles
+    # an insertion makes, which the kernels store with the new vertex at
+    # corner 0.  The mesh so far holds its triangles in output order (org,
+    # dest, apex of Triangle's orientation 0), and Triangle tests those from
+    # orientation 0: turn them so that handle 3 t is that one too.  The
+    # handle decides the Steiner point's rounding, where the walk starts, the
+    # order of the new triangles, and Triangle's -u test at its org; with the
+    # turn, -r with area bounds makes Triangle's meshes (bbox.1).  At the end
+    # every triangle turns the other way, to output order (org, dest, apex
+    # of handle 3 t, as Triangle writes its triangles).
+    rotate_corners(ms.m, 2)
     cdt.build_vertex_edges(ms.m, ms.vtri)
     rf.tally_encroached(r, ms.m, ms.segs)
     r = finish(ms, r, user)
+    rotate_corners(ms.m, 1)
+    cdt.build_vertex_edges(ms.m, ms.vtri)
     return _trace_table(r.trace[: int(r.ipar[rf.I_NTRACE])]) if trace else None
 
 
@@ -202,7 +217,9 @@ def _judge(m, user: Callable, judged: np.ndarray) -> tuple[np.ndarray, np.ndarra
     xy = m.xy
     bad = []
     for t in fresh:
-        o, d, a = (xy[m.corner[3 * t + k]] for k in range(3))
+        # Triangle asks about the handle it tests: org, dest, apex are corners
+        # 1, 2, 0 of a slot (see run: handle 3 t)
+        o, d, a = (xy[m.corner[3 * t + k]] for k in (1, 2, 0))
         area = 0.5 * ((d[0] - o[0]) * (a[1] - o[1]) - (d[1] - o[1]) * (a[0] - o[0]))
         if user(o.copy(), d.copy(), a.copy(), area):
             bad.append(t)

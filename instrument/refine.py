@@ -145,6 +145,7 @@ class Refiner(NamedTuple):
     seen: np.ndarray  # (T,) int8 scratch: 1 in the cavity, 2 tested outside
     bnd: np.ndarray  # (T, 5) int64 scratch: cavity boundary edge (twin, org, dest, record, edge)
     bval: np.ndarray  # (T, 2) float64 scratch: area bound and attribute it passes on
+    carry: np.ndarray  # (T,) float64 scratch: the area bound each cavity triangle passes on (see _cavity)
     vslot: np.ndarray  # (V,) int64 scratch: new triangle starting at a vertex, -1
     trace: np.ndarray  # (N, 5) int64 rows: kind, created, deleted, walk steps, queue length (N = 0: off)
 
@@ -499,6 +500,14 @@ def _bounds(r, t):
 
 
 @kernel_inline
+def _flip_bound(a, b):
+    """The area bound both triangles of one of Triangle's insertion flips
+    get from bounds ``a`` and ``b``: their mean, or none (-1) if either has
+    none (found by experiment: see reconstruct.py)."""
+    return 0.5 * (a + b) if a > 0.0 and b > 0.0 else -1.0
+
+
+@kernel_inline
 def _set_bounds(r, t, area, attr):
     if r.area.shape[0]:
         r.area[t] = area
@@ -532,7 +541,7 @@ def test_triangle(r, m, segs, vtri, work, t, state):
     bound = _bounds(r, t)[0]
     if not bad and r.ipar[I_VARAREA] and bound > 0.0 and 0.5 * area2 > bound:
         bad = True
-    if not bad and r.ipar[I_USER] == 1 and builtin_unsuitable(xy, a, b, c):
+    if not bad and r.ipar[I_USER] == 1 and builtin_unsuitable(xy, b, c, a):  # handle 3 t: org, dest, apex
         bad = True
     if not bad and r.ipar[I_ANGLE] and cos2 > r.par[P_GOODANGLE]:
         # the shortest edge is not a subsegment and its ends lie on segments
@@ -614,16 +623,28 @@ def _cavity(r, m, work, px, py, t0, t1, skip):
 
     Returns ``(ntri, nbnd)``: ``r.cav[:ntri]`` the triangles, ``r.bnd[:nbnd]``
     the boundary edges as (outer twin, org, dest, record), each with the
-    area bound and attribute of its inner triangle in ``r.bval``.  Leaves
+    area bound and attribute its new triangle takes in ``r.bval``.  Leaves
     ``r.seen`` set on the triangles in ``r.cav[:ntest]``; call ``_unsee``.
+
+    The attribute is the inner triangle's.  The area bound is the one
+    Triangle's insertion (a 1-3 or 2-4 split, then Lawson flips) leaves on
+    that edge's new triangle: the split copies the bound of ``t0`` (or
+    ``t1``), each flip gives both of its triangles ``_flip_bound`` of the
+    two.  The cavity's triangles form a tree rooted at ``t0`` (and ``t1``)
+    and each flip crosses one tree edge, so the bound is that fold along
+    the path from the root, whatever the order of the flips:
+    ``r.carry[i]`` holds it for ``cav[i]``.
     """
     xy = m.xy
     cav = r.cav
+    carry = r.carry
     n = 1
     cav[0] = t0
+    carry[0] = _bounds(r, t0)[0]
     r.seen[t0] = 1
     if t1 >= 0:
         cav[1] = t1
+        carry[1] = _bounds(r, t1)[0]
         r.seen[t1] = 1
         n = 2
     tested = cav.shape[0]  # triangles tested outside go at the end of cav
@@ -632,6 +653,7 @@ def _cavity(r, m, work, px, py, t0, t1, skip):
     skip_twin = m.twin[skip] if skip >= 0 else -2
     while i < n:
         t = cav[i]
+        passed = carry[i]
         i += 1
         for k in range(3):
             e = 3 * t + k
@@ -649,6 +671,7 @@ def _cavity(r, m, work, px, py, t0, t1, skip):
                     if incircle(xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[c, 0], xy[c, 1], px, py) > 0.0:
                         r.seen[u] = 1
                         cav[n] = u
+                        carry[n] = _flip_bound(passed, _bounds(r, u)[0])  # the flip across e
                         n += 1
                         continue
                     r.seen[u] = 2
@@ -660,7 +683,8 @@ def _cavity(r, m, work, px, py, t0, t1, skip):
             r.bnd[nb, 2] = m.corner[lprev(e)]
             r.bnd[nb, 3] = m.seg[e]
             r.bnd[nb, 4] = e
-            r.bval[nb, 0], r.bval[nb, 1] = _bounds(r, t)
+            r.bval[nb, 0] = passed
+            r.bval[nb, 1] = _bounds(r, t)[1]
             nb += 1
     for j in range(tested, cav.shape[0]):
         r.seen[cav[j]] = 0
@@ -861,13 +885,19 @@ def _fill_polygon(r, m, work, vtri, chain, outer, outer_seg, count, stack):
 
 
 @kernel
-def delete_free_vertex(r, m, segs, vtri, work, v, state):
-    """Remove free vertex ``v`` (Chew's rule: it sits in a subsegment's
-    diametral circle) and re-triangulate its star.  Returns False (nothing
-    changed) if ``v`` is on the boundary or the scratch space is short."""
-    e0 = _org_edge(m, vtri, v)
-    if e0 < 0:
-        return False
+def delete_free_vertex(r, m, segs, vtri, work, e0, state):
+    """Remove the free vertex ``v`` at the origin of edge ``e0`` (Chew's
+    rule: ``v`` sits in the diametral circle of the subsegment opposite it
+    in ``e0``'s triangle) and re-triangulate its star from that subsegment
+    as the base, as Triangle does.  Returns False (nothing changed) if
+    ``v`` is on the boundary or the scratch space is short.
+
+    Area bounds and attributes (found by experiment, see reconstruct.py):
+    Triangle's deletion flips move the triangles' values without averaging,
+    so the triangle on the base keeps the value of the star triangle on the
+    base, and every other new triangle, with apex ``w[k]`` over its base,
+    the value of the star triangle ``(v, w[k-1], w[k])``."""
+    v = m.corner[lnext(e0)]
     # the star, counter-clockwise: w[i] = dest of the i-th edge out of v
     w = r.cav  # vertices
     outer = r.bnd[:, 0]  # outside twin of w[i] -> w[i+1]
@@ -923,8 +953,44 @@ def delete_free_vertex(r, m, segs, vtri, work, v, state):
     root, made = _fill_polygon(r, m, work, vtri, chain, w, rec, d, r.bnd[:, 2])
     bond(m, root, base_outer)
     m.seg[root] = base_seg
-    for i in range(made):
-        _set_bounds(r, r.fan[i], area0, attr0)
+    # vslot is all -1 again here: map each star vertex to its place (chain[i]
+    # = w[d - i]; w0 closes the polygon, as place d)
+    slot = r.vslot
+    slot[chain[0]] = d
+    for i in range(1, d):
+        slot[chain[i]] = d - i
+    # the values by apex (see the docstring); fill triangles are (apex, base org, base dest)
+    _set_bounds(r, r.fan[0], area0, attr0)  # the base triangle (the fill makes it first)
+    for i in range(1, made):
+        k = slot[m.corner[3 * r.fan[i]]]
+        _set_bounds(r, r.fan[i], area[k - 1], attr[k - 1])
+    # Triangle tests the new triangles as its flips make them, in post-order
+    # of the polygon's split (the side from w1 first), the base triangle
+    # last: sorted by the place of their last vertex (base org), then of
+    # their first (base dest) downwards.  w[:made - 1] is free now.
+    order = w
+    for i in range(1, made):
+        t = r.fan[i]
+        hi = slot[m.corner[3 * t + 1]]
+        lo = slot[m.corner[3 * t + 2]]
+        j = i - 1
+        while j > 0:
+            u = order[j - 1]
+            uhi = slot[m.corner[3 * u + 1]]
+            if uhi < hi or (uhi == hi and slot[m.corner[3 * u + 2]] > lo):
+                break
+            order[j] = u
+            j -= 1
+        order[j] = t
+    slot[chain[0]] = -1
+    for i in range(1, d):
+        slot[chain[i]] = -1
+    # Triangle's base triangle keeps the deleted vertex's base triangle and
+    # its handle: (new apex, w0, w1) as org, dest, apex, so handle 3 t
+    _turn_back(m, vtri, r.fan[0])
+    order[made - 1] = r.fan[0]
+    for i in range(made):  # back to fan: the adversary's test overwrites cav
+        r.fan[i] = order[i]
     r.vtype[v] = V_DEAD
     work[C_DELETED_VERTEX] += 1
     _trace(r, T_DELETED, made, d, 0, r.ipar[I_HSIZE])
@@ -932,6 +998,22 @@ def delete_free_vertex(r, m, segs, vtri, work, v, state):
         for i in range(made):
             test_triangle(r, m, segs, vtri, work, r.fan[i], state)
     return True
+
+
+@kernel
+def _turn_back(m, vtri, t):
+    """Rotate triangle ``t``'s corners (a, b, c) to (c, a, b), with its
+    edges (edge k moves with corner k) and its neighbours' links."""
+    e = 3 * t
+    c0, c1, c2 = m.corner[e], m.corner[e + 1], m.corner[e + 2]
+    w0, w1, w2 = m.twin[e], m.twin[e + 1], m.twin[e + 2]
+    s0, s1, s2 = m.seg[e], m.seg[e + 1], m.seg[e + 2]
+    m.corner[e], m.corner[e + 1], m.corner[e + 2] = c2, c0, c1
+    m.seg[e], m.seg[e + 1], m.seg[e + 2] = s2, s0, s1
+    bond(m, e, w2)
+    bond(m, e + 1, w0)
+    bond(m, e + 2, w1)
+    _remember(m, vtri, t)
 
 
 @kernel
@@ -962,7 +1044,7 @@ def _chew_delete(r, m, segs, vtri, work, e, state):
                 break
             if queue_used(r) + 64 > r.hkey.shape[0]:
                 return False
-            if not delete_free_vertex(r, m, segs, vtri, work, a, state):
+            if not delete_free_vertex(r, m, segs, vtri, work, lprev(f), state):  # the edge a -> o
                 break
             f = _edge(m, work, vtri, o, d, state)  # the same side again
             if f < 0:

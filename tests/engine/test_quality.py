@@ -149,7 +149,7 @@ def _queue(strategy: str, capacity: int = 64):
         hkey=np.zeros(capacity), hseq=np.zeros(capacity, dtype=np.int64), htri=np.zeros(capacity, dtype=np.int64),
         hstamp=np.zeros(capacity, dtype=np.int64), bucket=np.zeros((2, rf.NBUCKETS), dtype=np.int64),
         enc=np.zeros((0, 4), dtype=np.int64), cav=z, fan=z, seen=np.zeros(0, dtype=np.int8),
-        bnd=np.zeros((0, 5), dtype=np.int64), bval=np.zeros((0, 2)), vslot=z, trace=np.zeros((0, 5), dtype=np.int64),
+        bnd=np.zeros((0, 5), dtype=np.int64), bval=np.zeros((0, 2)), carry=np.zeros(0), vslot=z, trace=np.zeros((0, 5), dtype=np.int64),
     )
     rf.queue_clear(r)
     return rf, r
