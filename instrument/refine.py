@@ -27,6 +27,7 @@ from typing import NamedTuple
 import numpy as np
 
 from .cdt import R_NREC, _edge, _org_edge, _remember, edge_around, new_record, set_parent
+from .insert import flip
 from .counters import (
     C_CIRCUMCENTER,
     C_CREATED,
@@ -1095,6 +1096,20 @@ def split_subsegment(r, m, segs, vmark, parent, vtri, work, e, triflaws, state):
         r.ipar[I_ERRV] = o
         r.ipar[I_ERRW] = d
         return PRECISION
+    # A vertex can lie on the subsegment within rounding, not exactly (a split
+    # point an earlier run wrote out, read back as an input vertex): it is
+    # then the apex on its side (any other triangle there would contain it).
+    # Splitting elsewhere leaves it encroaching every piece it lies on, the
+    # pieces shrink towards it until a split point lands on it or next to it,
+    # and the mesh gets a copy of it or slivers and runs out of precision
+    # (Triangle crashes).  Split at that vertex instead.
+    f = -1
+    if _on_subsegment(xy, o, d, m.corner[e]):
+        f = e
+    elif tw != NO_EDGE and _on_subsegment(xy, o, d, m.corner[tw]):
+        f = tw
+    if f >= 0:
+        return _split_at_apex(r, m, segs, vmark, vtri, work, e, f, triflaws, state)
     t1 = tw // 3 if tw != NO_EDGE else -1
     n, nb = _cavity(r, m, work, px, py, e // 3, t1, e)
     if not _room(r, m, nb) or segs.size[R_NREC] >= segs.marker.shape[0]:
@@ -1124,6 +1139,90 @@ def split_subsegment(r, m, segs, vmark, parent, vtri, work, e, triflaws, state):
     if ea >= 0:
         check_subsegment(r, m, ea)
     _trace(r, T_SEGMENT, nb, n, 0, r.ipar[I_HSIZE])
+    return DONE
+
+
+# A vertex this close to a subsegment's line (relative to the largest
+# coordinate of the three points) lies on it up to rounding: a few units in
+# the last place, where split points that were moved onto the line once and
+# printed with 17 digits land.
+ON_SEGMENT = 2.0**-50
+
+
+@kernel
+def _on_subsegment(xy, a, b, c):
+    """Does vertex ``c`` lie on the segment ``a b`` up to rounding, between its
+    ends?"""
+    ex, ey = xy[b, 0] - xy[a, 0], xy[b, 1] - xy[a, 1]
+    cx, cy = xy[c, 0] - xy[a, 0], xy[c, 1] - xy[a, 1]
+    scale = max(abs(xy[a, 0]), abs(xy[a, 1]), abs(xy[b, 0]), abs(xy[b, 1]), abs(xy[c, 0]), abs(xy[c, 1]))
+    cross = ex * cy - ey * cx
+    dot = ex * cx + ey * cy
+    return abs(cross) <= ON_SEGMENT * scale * math.sqrt(ex * ex + ey * ey) and 0.0 < dot < ex * ex + ey * ey
+
+
+@kernel
+def _split_at_apex(r, m, segs, vmark, vtri, work, e, f, triflaws, state):
+    """Split subsegment edge ``e`` (org o, dest d) at the existing vertex
+    ``c``, the apex of its side ``f`` (``e`` or its twin), which lies on it
+    within rounding: the sliver ``(o, d, c)`` goes (with a triangle on the
+    other side, flipping ``o d`` to ``c y``; without one, deleting the
+    sliver), and ``c o`` and ``c d`` become the two halves, as a split's
+    would.  No vertex is made.  Returns DONE, NEED_ROOM or PRECISION."""
+    o = m.corner[lnext(e)]
+    d = m.corner[lprev(e)]
+    c = m.corner[f]
+    g = m.twin[f]
+    n_c0 = m.twin[lprev(f)]  # the neighbours across the sliver's other edges
+    n_c1 = m.twin[lnext(f)]
+    if g == NO_EDGE and (n_c0 == NO_EDGE or n_c1 == NO_EDGE):
+        r.ipar[I_ERRV] = o  # a sliver ear of the mesh: nothing to split at
+        r.ipar[I_ERRW] = d
+        return PRECISION
+    if segs.size[R_NREC] >= segs.marker.shape[0] or queue_used(r) + 4 > r.hkey.shape[0] or _enc_len(r) + 4 > r.enc.shape[0]:
+        r.ipar[I_NEED] = max(r.ipar[I_NEED], 4)
+        return NEED_ROOM
+    rec = m.seg[e]
+    half = new_record(segs, segs.marker[rec], segs.source[rec], segs.ends[rec, 0], segs.ends[rec, 1])
+    if vmark[c] == 0:
+        vmark[c] = segs.marker[rec]
+    if r.vtype[c] == V_FREE:
+        r.vtype[c] = V_SEGMENT
+    made = 0
+    if g != NO_EDGE:
+        # the two triangles on the far side take the far side's bound and attribute
+        area, attr = _bounds(r, g // 3)
+        t1 = flip(m, work, f)  # (c, u, y) and (c, y, w) for f = u -> w
+        t2 = m.twin[3 * t1 + 1] // 3
+        for t in (t1, t2):
+            _set_bounds(r, t, area, attr)
+            _remember(m, vtri, t)
+        h0 = 3 * t1 + 2  # c - u
+        h1 = 3 * t2 + 1  # w - c
+        r.fan[0] = t1
+        r.fan[1] = t2
+        made = 2
+    else:
+        kill_triangle(m, f // 3)
+        work[C_DELETED] += 1
+        m.twin[n_c0] = NO_EDGE
+        m.twin[n_c1] = NO_EDGE
+        _remember(m, vtri, n_c0 // 3)
+        _remember(m, vtri, n_c1 // 3)
+        h0 = n_c0
+        h1 = n_c1
+    # the half at o keeps the record, the half at d takes the new one (as a split)
+    for h in (h0, h1):
+        u = m.corner[lnext(h)]
+        w = m.corner[lprev(h)]
+        _mark(m, h, rec if u == o or w == o else half)
+    work[C_SEGMENT_SPLIT] += 1
+    for i in range(made):
+        if triflaws:
+            test_triangle(r, m, segs, vtri, work, r.fan[i], state)
+    check_subsegment(r, m, h0)
+    check_subsegment(r, m, h1)
+    _trace(r, T_SEGMENT, made, 1 + made, 0, r.ipar[I_HSIZE])
     return DONE
 
 
