@@ -164,6 +164,19 @@ def _side(ax, ay, bx, by, px, py):
 
 
 @kernel
+def _ahead(xy, a, b, v):
+    """For ``v`` on the line ``a -> b`` (up to ``_side``'s tolerance): is it
+    ``b`` or between ``a`` and ``b``?  A vertex past ``b`` (or behind ``a``)
+    is not on the segment: with the tolerance it can look collinear while
+    both ``a b`` and ``a v`` are edges (the guitar outline: taking it marked
+    an edge that is no segment and left the segment's own edge unmarked)."""
+    if v == b:
+        return True
+    dot = (xy[v, 0] - xy[a, 0]) * (xy[b, 0] - xy[a, 0]) + (xy[v, 1] - xy[a, 1]) * (xy[b, 1] - xy[a, 1])
+    return 0.0 < dot < (xy[b, 0] - xy[a, 0]) ** 2 + (xy[b, 1] - xy[a, 1]) ** 2
+
+
+@kernel
 def _turn_to(m, work, a, b, e0):
     """Turn around ``a`` (from edge ``e0``, origin ``a``) to the edge ``e``
     (origin ``a``) whose triangle contains the start of the ray ``a -> b``.
@@ -182,9 +195,9 @@ def _turn_to(m, work, a, b, e0):
             work[C_ORIENT] += 2
             od = -_side(ax, ay, bx, by, xy[d, 0], xy[d, 1])
             ox = -_side(ax, ay, bx, by, xy[x, 0], xy[x, 1])
-            if od == 0.0 and (xy[d, 0] - ax) * (bx - ax) + (xy[d, 1] - ay) * (by - ay) > 0.0:
+            if od == 0.0 and _ahead(xy, a, b, d):
                 return e, 1
-            if ox == 0.0 and (xy[x, 0] - ax) * (bx - ax) + (xy[x, 1] - ay) * (by - ay) > 0.0:
+            if ox == 0.0 and _ahead(xy, a, b, x):
                 return e, 2
             if od > 0.0 and ox < 0.0:
                 return e, 0
