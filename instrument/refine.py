@@ -1175,8 +1175,16 @@ def _split_at_apex(r, m, segs, vmark, vtri, work, e, f, triflaws, state):
     g = m.twin[f]
     n_c0 = m.twin[lprev(f)]  # the neighbours across the sliver's other edges
     n_c1 = m.twin[lnext(f)]
-    if g == NO_EDGE and (n_c0 == NO_EDGE or n_c1 == NO_EDGE):
-        r.ipar[I_ERRV] = o  # a sliver ear of the mesh: nothing to split at
+    bad = g == NO_EDGE and (n_c0 == NO_EDGE or n_c1 == NO_EDGE)  # a sliver ear of the mesh
+    if g != NO_EDGE:  # the flip must leave two counter-clockwise triangles
+        xy = m.xy
+        u, w, y = m.corner[lnext(f)], m.corner[lprev(f)], m.corner[g]
+        bad = not (
+            orient2d(xy[c, 0], xy[c, 1], xy[u, 0], xy[u, 1], xy[y, 0], xy[y, 1]) > 0.0
+            and orient2d(xy[c, 0], xy[c, 1], xy[y, 0], xy[y, 1], xy[w, 0], xy[w, 1]) > 0.0
+        )
+    if bad:  # nothing to split at: Triangle's error
+        r.ipar[I_ERRV] = o
         r.ipar[I_ERRW] = d
         return PRECISION
     if segs.size[R_NREC] >= segs.marker.shape[0] or queue_used(r) + 4 > r.hkey.shape[0] or _enc_len(r) + 4 > r.enc.shape[0]:

@@ -89,3 +89,22 @@ def test_the_command_lines_of_the_issue(tmp_path):
         done = run(opts, "y.1.node")
         assert done.returncode == 0, done.stdout[-500:] + done.stderr[-500:]
         assert "Error" not in done.stdout + done.stderr
+
+
+def test_split_at_a_vertex_next_to_an_interior_segment():
+    """-rp: the segment (0.2, 0.5)-(0.8, 0.5) has a triangle on each side;
+    the apex above it is one unit in the last place off its midpoint.  The
+    split flips the sliver away (before: 101 vertices piled up at the
+    midpoint under rpq, and rpq30 did not finish)."""
+    c = [0.5, float(np.nextafter(0.5, 1.0))]
+    d = {
+        "vertices": [[0, 0], [1, 0], [1, 1], [0, 1], [0.2, 0.5], [0.8, 0.5], c],
+        "triangles": [[5, 4, 0], [1, 5, 0], [1, 2, 5], [0, 4, 3], [4, 5, 6], [4, 6, 3], [6, 5, 2], [6, 2, 3]],
+        "segments": [[0, 1], [1, 2], [2, 3], [3, 0], [4, 5]],
+    }
+    pslg = {"vertices": d["vertices"], "segments": d["segments"]}
+    for opts in ("rpq", "rpq30", "rpqa0.01"):
+        r = instrument.triangulate(d, opts)
+        assert check_mesh(r, pslg, min_angle=_min_angle(opts)) == []
+        v = np.asarray(r["vertices"])
+        assert (np.hypot(v[:, 0] - 0.5, v[:, 1] - 0.5) < 1e-9).sum() == 1
