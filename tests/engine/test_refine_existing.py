@@ -180,16 +180,41 @@ def test_per_triangle_area_bounds(name, scale):
         r = instrument.triangulate(d, opts)
         t = triangle.triangulate(d, opts)
         assert check_mesh(r, min_angle=30 if "q" in opts else None) == []
-        bound = r["triangle_attributes"][:, 0]
-        assert (areas(r) <= bound * (1 + 1e-12)).all()
-        # descendants of input triangle i carry its attribute row (no averaging)
+        # The bounds travel as in Triangle (reconstruct.py): an insertion's
+        # flips average them, so a triangle's bound is a mean of input
+        # bounds near it, not its ancestor's (up to 1.29 times it here).
+        assert (areas(r) <= d["triangle_max_area"].max() * (1 + 1e-12)).all()
+        # descendants of input triangle i carry its attribute row (ours: no averaging)
         anc = r["triangle_attributes"][:, 1].astype(int)
         np.testing.assert_array_equal(r["triangle_attributes"][:, 0], d["triangle_max_area"][anc])
-        # Triangle averages the bounds of the two triangles of each flip, we
-        # copy them; with the refiner's order that gives (measured, ours vs
-        # Triangle, ra / rpq30a): A.1 130/129, 146/150; face.1 365/351,
-        # 353/359; double_hex.1 232/233, 272/255; la.1 982/981, 1832/1906
-        assert close(len(r["vertices"]), len(t["vertices"]), rel=0.07), (opts, len(r["vertices"]), len(t["vertices"]))
+        # measured (vertices, ours vs Triangle, ra / rpq30a): A.1 129/129,
+        # 151/150; face.1 345/351, 357/359; double_hex.1 233/233, 255/255;
+        # la.1 979/981, 1862/1906 (copying the bounds gave 130/129, 146/150;
+        # 365/351, 353/359; 232/233, 272/255; 982/981, 1832/1906)
+        assert close(len(r["vertices"]), len(t["vertices"]), rel=0.03), (opts, len(r["vertices"]), len(t["vertices"]))
+
+
+def test_bounds_constant_between_segments_are_met_everywhere():
+    """Flips never cross a subsegment, so a bound that is constant on each
+    part of the domain the segments enclose stays that part's bound: every
+    triangle must meet it."""
+    two = {
+        "vertices": [[0, 0], [1, 0], [1, 1], [0, 1], [0.5, 0], [0.5, 1]],
+        "segments": [[0, 4], [4, 1], [1, 2], [2, 5], [5, 3], [3, 0], [4, 5]],
+        "regions": [[0.25, 0.5, 1, 0], [0.75, 0.5, 2, 0]],
+    }
+    made = triangle.triangulate(two, "pqA")
+    d = {k: made[k] for k in ("vertices", "vertex_markers", "triangles", "segments", "segment_markers")}
+    left = np.asarray(made["triangle_attributes"]).ravel() == 1
+    d["triangle_max_area"] = np.where(left, 0.002, 0.02)
+    for opts in ("rpa", "rpq30a", "rpqa0.01a"):
+        r = instrument.triangulate(d, opts)
+        t = triangle.triangulate(d, opts)
+        x = np.asarray(r["vertices"])[np.asarray(r["triangles"])].mean(axis=1)[:, 0]
+        bound = np.where(x < 0.5, 0.002, 0.01 if "0.01" in opts else 0.02)
+        assert (areas(r) <= bound * (1 + 1e-12)).all()
+        assert check_mesh(r, min_angle=30 if "q30" in opts else None) == []
+        assert close(len(r["vertices"]), len(t["vertices"]), rel=0.03), (opts, len(r["vertices"]), len(t["vertices"]))
 
 
 def test_area_file_sample():
