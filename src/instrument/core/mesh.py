@@ -184,6 +184,23 @@ class Mesh:
             live &= (c >= 0).all(axis=1)
         return np.flatnonzero(live).astype(np.int64)
 
+    def rotate_corners(self, shift: int) -> None:
+        """Renumber every triangle's corners in place: new corner ``k`` is
+        old corner ``(k + shift) % 3`` (each triangle keeps its orientation),
+        with its edges' twins and subsegments.  Edge numbers held elsewhere
+        (the vertices' edge hints, queued edges) are stale afterwards."""
+        n = self.nslot
+        if n == 0 or shift % 3 == 0:
+            return
+        a = self.arrays()
+        k = np.arange(3 * n) % 3
+        old = np.arange(3 * n) - k + (k + shift) % 3  # the old edge each new edge number takes over
+        twin = a["twin"][old]
+        j = twin % 3
+        a["twin"][: 3 * n] = np.where(twin >= 0, twin - j + (j - shift) % 3, twin)
+        a["corner"][: 3 * n] = a["corner"][old]
+        a["seg"][: 3 * n] = a["seg"][old]
+
     def arrays(self) -> dict:
         """The tables as numpy arrays (views, not copies), by name."""
         names = (

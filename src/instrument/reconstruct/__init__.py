@@ -36,11 +36,61 @@ corners keeps its diagonal.  Steps:
 Triangle attributes travel with the refiner's per-triangle value, which new
 triangles copy from the triangle they replace: it carries the index of the
 input triangle each one descends from, and the attribute rows are looked up
-at the end.  Per-triangle area bounds (``triangle_max_area`` with a bare
-``a``; <= 0 means none) are the refiner's per-triangle bounds.  Triangle
-averages both over the flips of an insertion; the cavity insertion copies
-instead.  ``j`` keeps unused input vertices: Triangle jettisons only undead
-ones, which reconstruction never makes.
+at the end.  (Triangle averages attributes over an insertion's flips, as it
+does area bounds below, so after refinement the attributes of triangles
+that straddle two input triangles differ from Triangle's; the meshes do
+not.)  Per-triangle area bounds (``triangle_max_area`` with a bare ``a``;
+<= 0 means none) are the refiner's per-triangle bounds, carried as Triangle
+carries them.  ``j`` keeps unused input vertices: Triangle jettisons only
+undead ones, which reconstruction never makes.
+
+How Triangle carries a triangle's area bound (found by experiment)
+------------------------------------------------------------------
+* An insertion splits the triangle the new vertex falls in (or the two on
+  the edge it falls on) and the pieces copy its bound; each Lawson flip
+  that follows gives both of its triangles the mean of their two bounds,
+  or no bound if either has none (<= 0).  The cavity of the insertion is a
+  tree rooted at the split triangle(s) and each flip crosses one of its
+  edges, so a new triangle's bound is that fold along the path to its rim
+  edge, in whatever order the flips run: refine/cavity.py's ``collect_cavity`` computes
+  it.  Subsegment splits are insertions too.
+* A deletion (a free vertex in a subsegment's diametral circle) flips the
+  star into shape without averaging: the triangle on the subsegment keeps
+  the bound of the star triangle on it; every other new triangle, with
+  apex ``w[k]`` over its base, the bound of the star triangle
+  ``(v, w[k-1], w[k])`` (counter-clockwise around the deleted ``v``).
+  Triangle tests the new triangles in the post-order of its polygon
+  split, the triangle on the subsegment last (``delete_free_vertex``).
+* Triangle tests and splits the triangles of the initial mesh from their
+  orientation-0 handle, the ones an insertion makes from the handle with
+  the new vertex as apex; refine.run turns the initial triangles so that
+  the refiner's handle is Triangle's for both.
+
+The experiments (the `triangle` package, 20250106):
+1. Two triangles, ``T0 = (0,0) (2,0) (1,1.6)`` with attribute 10 and
+   ``T1 = (2,0) (0,0) (1,-0.3)`` with 20, ``rVVa1S1``: one circumcenter,
+   (1, 0.4875), whose insertion flips the shared edge.  The two triangles
+   left from ``T0`` have attribute 10, the two made by the flip 15.
+2. The same mesh with bounds instead, ``rVVa``: bounds (0.5, 0.35) and
+   (0.5, 0.45): the flipped triangles (area 0.394) are not split next, as
+   they would be with T1's 0.35 copied (their means are 0.425, 0.475);
+   (0.5, 0.2): T1 (area 0.3) is split first, as its own bound says.
+3. ``T1``'s third corner at (1, -1) (flipped triangles of area 0.744) and
+   bounds (0.6, -0.1), (0.6, 0), (0.6, -1): after T0's split nothing more is
+   split, so the flipped triangles have no bound: not the mean (0.25 would
+   split them) and not the positive one (0.6 would too).
+4. ``-VVVV`` prints every triangle record with its "Area constraint" after
+   each split, flip and deletion.  bbox.1 ``raVVVV``: in 16 of 16 flips of
+   a deletion both records keep their bounds, and the triangle without the
+   deleted vertex keeps the record of the star triangle before the flipped
+   edge (counter-clockwise), which gives the rule above by induction.  The
+   pq30VVVV logs of A, la and face (102 deletions): where both sides of a
+   base have a sub-polygon, the one from the base's first corner
+   (counter-clockwise) is triangulated first (62 of 62), and the triangle
+   on the subsegment is queued last, as (new apex, w0, w1) (37 of 37).
+5. Result: bbox.1 with ``ra`` (its .area bounds one triangle to 0.02) makes
+   21 vertices and 27 triangles, as Triangle (copying the bounds made 114
+   and 204); ``rpaa.5`` 27 and 39 (was 20 and 27).
 """
 
 from __future__ import annotations

@@ -10,8 +10,10 @@ cavity is collected, its rim put in Triangle's order, and then replaced by
 the fan of triangles from the new vertex to the rim; ``triangles_created``
 of an insertion is the new vertex's degree, the paper's measure.
 
-A new triangle inherits the area bound and the regional attribute of the
-triangle inside the rim edge it stands on.
+A new triangle takes the regional attribute of the triangle inside the rim
+edge it stands on, and the area bound Triangle's insertion leaves on it
+(``collect_cavity``; the rule was found by experiment, see
+reconstruct/__init__.py).
 
 Scratch: ``Refiner.cav`` (the cavity, and from its end the triangles
 tested outside it), ``Refiner.bnd``/``bval`` (the rim), ``Refiner.fan``
@@ -53,6 +55,17 @@ def inherited(m: Mesh, t: Index) -> tuple[cython.double, cython.double]:
     return area, attr
 
 
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _flip_bound(a: cython.double, b: cython.double) -> cython.double:
+    """The area bound both triangles of one of Triangle's insertion flips
+    get from bounds ``a`` and ``b``: their mean, or none (-1) if either has
+    none (found by experiment: see reconstruct/__init__.py)."""
+    return 0.5 * (a + b) if a > 0.0 and b > 0.0 else -1.0
+
+
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
@@ -73,17 +86,33 @@ def collect_cavity(r: Refiner, m: Mesh, px: cython.double, py: cython.double, t0
 
     Returns ``(ntri, nbnd)``: ``r.cav[:ntri]`` the triangles, ``r.bnd[:nbnd]``
     the rim edges as (outer twin, org, dest, record, edge), each with the
-    area bound and attribute of its inner triangle in ``r.bval``.  Leaves
+    area bound and attribute its new triangle takes in ``r.bval``.  Leaves
     ``m.tflag`` set on the cavity's triangles; ``fill_cavity`` or
     ``forget_cavity`` clears it.
+
+    The attribute is the inner triangle's.  The area bound is the one
+    Triangle's insertion (a 1-3 or 2-4 split, then Lawson flips) leaves on
+    that edge's new triangle: the split copies the bound of ``t0`` (or
+    ``t1``), each flip gives both of its triangles ``_flip_bound`` of the
+    two.  The cavity's triangles form a tree rooted at ``t0`` (and ``t1``)
+    and each flip crosses one tree edge, so the bound is that fold along
+    the path from the root, whatever the order of the flips:
+    ``r.carry[i]`` holds it for ``cav[i]``.
     """
     xy = m.xy
     cav = r.cav
+    carry = r.carry
+    area: cython.double
+    attr: cython.double
     n: Index = 1
     cav[0] = t0
+    area, attr = inherited(m, t0)
+    carry[0] = area
     m.tflag[t0] = 1
     if t1 >= 0:
         cav[1] = t1
+        area, attr = inherited(m, t1)
+        carry[1] = area
         m.tflag[t1] = 1
         n = 2
     tested: Index = cav.shape[0]  # triangles tested outside go at the end of cav
@@ -98,10 +127,10 @@ def collect_cavity(r: Refiner, m: Mesh, px: cython.double, py: cython.double, t0
     b: Index
     c: Index
     outside: cython.bint
-    area: cython.double
-    attr: cython.double
+    passed: cython.double
     while i < n:
         t = cav[i]
+        passed = carry[i]
         i += 1
         for k in range(3):
             e = 3 * t + k
@@ -119,6 +148,8 @@ def collect_cavity(r: Refiner, m: Mesh, px: cython.double, py: cython.double, t0
                     if incircle(xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[c, 0], xy[c, 1], px, py) > 0.0:
                         m.tflag[u] = 1
                         cav[n] = u
+                        area, attr = inherited(m, u)
+                        carry[n] = _flip_bound(passed, area)  # the flip across e
                         n += 1
                         continue
                     m.tflag[u] = 2
@@ -131,7 +162,7 @@ def collect_cavity(r: Refiner, m: Mesh, px: cython.double, py: cython.double, t0
             r.bnd[nb, 3] = m.seg[e]
             r.bnd[nb, 4] = e
             area, attr = inherited(m, t)
-            r.bval[nb, 0] = area
+            r.bval[nb, 0] = passed
             r.bval[nb, 1] = attr
             nb += 1
     for j in range(tested, cav.shape[0]):

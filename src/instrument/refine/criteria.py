@@ -238,7 +238,7 @@ def test_triangle(r: Refiner, m: Mesh, segs: Subsegments, t: Index) -> cython.vo
     bound, attr = inherited(m, t)
     if not bad and r.cfg.regional_area and bound > 0.0 and 0.5 * area2 > bound:
         bad = True
-    if not bad and r.cfg.builtin_user and builtin_unsuitable(m, a, b, c):
+    if not bad and r.cfg.builtin_user and builtin_unsuitable(m, b, c, a):  # handle 3 t: org, dest, apex
         bad = True
     k: Index
     exempt: cython.bint

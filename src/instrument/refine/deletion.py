@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import cython
 from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, V_DEAD, V_FREE, Index, Mesh, bond, kill_triangle, lnext, lprev, new_triangle, spare_triangles
-from cython.cimports.instrument.core.navigate import find_edge, origin_edge, remember_corners
+from cython.cimports.instrument.core.navigate import find_edge, remember_corners
 from cython.cimports.instrument.core.predicates import incircle
 from cython.cimports.instrument.core.subsegments import Subsegments
 from cython.cimports.instrument.counters import C_CREATED, C_DELETED, C_DELETED_VERTEX, C_INCIRCLE
@@ -92,13 +92,20 @@ def _fill_polygon(
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
-def delete_free_vertex(r: Refiner, m: Mesh, segs: Subsegments, v: Index) -> cython.bint:
-    """Remove free vertex ``v`` (Chew's rule: it sits in a subsegment's
-    diametral circle) and re-triangulate its star.  Returns False (nothing
-    changed) if ``v`` is on the boundary or the scratch space is short."""
-    e0: Index = origin_edge(m, v)
-    if e0 < 0:
-        return False
+def delete_free_vertex(r: Refiner, m: Mesh, segs: Subsegments, e0: Index) -> cython.bint:
+    """Remove the free vertex ``v`` at the origin of edge ``e0`` (Chew's
+    rule: ``v`` sits in the diametral circle of the subsegment opposite it
+    in ``e0``'s triangle) and re-triangulate its star from that subsegment
+    as the base, as Triangle does.  Returns False (nothing changed) if
+    ``v`` is on the boundary or the scratch space is short.
+
+    Area bounds and attributes (found by experiment, see
+    reconstruct/__init__.py): Triangle's deletion flips move the triangles'
+    values without averaging, so the triangle on the base keeps the value
+    of the star triangle on the base, and every other new triangle, with
+    apex ``w[k]`` over its base, the value of the star triangle
+    ``(v, w[k-1], w[k])``."""
+    v: Index = m.corner[lnext(e0)]
     # the star, counter-clockwise: w[i] = dest of the i-th edge out of v
     w: cython.longlong[:] = r.cav  # vertices
     outer: cython.longlong[:] = r.bnd[:, 0]  # outside twin of w[i] -> w[i+1]
@@ -158,8 +165,50 @@ def delete_free_vertex(r: Refiner, m: Mesh, segs: Subsegments, v: Index) -> cyth
     root, made = _fill_polygon(r, m, chain, w, rec, d, r.bnd[:, 2])
     bond(m, root, base_outer)
     m.seg[root] = cython.cast(cython.int, base_seg)
-    for i in range(made):
-        inherit(m, r.fan[i], area0, attr0)
+    # vslot is all -1 again here: map each star vertex to its place (chain[i]
+    # = w[d - i]; w0 closes the polygon, as place d)
+    slot = m.vslot
+    slot[chain[0]] = d
+    for i in range(1, d):
+        slot[chain[i]] = d - i
+    # the values by apex (see the docstring); fill triangles are (apex, base org, base dest)
+    inherit(m, r.fan[0], area0, attr0)  # the base triangle (the fill makes it first)
+    k: Index
+    for i in range(1, made):
+        k = slot[m.corner[3 * r.fan[i]]]
+        inherit(m, r.fan[i], area[k - 1], attr[k - 1])
+    # Triangle tests the new triangles as its flips make them, in post-order
+    # of the polygon's split (the side from w1 first), the base triangle
+    # last: sorted by the place of their last vertex (base org), then of
+    # their first (base dest) downwards.  w[:made - 1] is free now.
+    order: cython.longlong[:] = w
+    hi: Index
+    lo: Index
+    j: Index
+    u: Index
+    uhi: Index
+    for i in range(1, made):
+        t = r.fan[i]
+        hi = slot[m.corner[3 * t + 1]]
+        lo = slot[m.corner[3 * t + 2]]
+        j = i - 1
+        while j > 0:
+            u = order[j - 1]
+            uhi = slot[m.corner[3 * u + 1]]
+            if uhi < hi or (uhi == hi and slot[m.corner[3 * u + 2]] > lo):
+                break
+            order[j] = u
+            j -= 1
+        order[j] = t
+    slot[chain[0]] = -1
+    for i in range(1, d):
+        slot[chain[i]] = -1
+    # Triangle's base triangle keeps the deleted vertex's base triangle and
+    # its handle: (new apex, w0, w1) as org, dest, apex, so handle 3 t
+    _turn_back(m, r.fan[0])
+    order[made - 1] = r.fan[0]
+    for i in range(made):  # back to fan: the adversary's test overwrites cav
+        r.fan[i] = order[i]
     m.vtype[v] = V_DEAD
     m.work[C_DELETED_VERTEX] += 1
     trace_row(r, T_DELETED, made, d, 0, r.hsize)
@@ -167,6 +216,30 @@ def delete_free_vertex(r: Refiner, m: Mesh, segs: Subsegments, v: Index) -> cyth
         for i in range(made):
             test_triangle(r, m, segs, r.fan[i])
     return True
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _turn_back(m: Mesh, t: Index) -> cython.void:
+    """Rotate triangle ``t``'s corners (a, b, c) to (c, a, b), with its
+    edges (edge k moves with corner k) and its neighbours' links."""
+    e: Index = 3 * t
+    c0: cython.int = m.corner[e]
+    c1: cython.int = m.corner[e + 1]
+    c2: cython.int = m.corner[e + 2]
+    w0: Index = m.twin[e]
+    w1: Index = m.twin[e + 1]
+    w2: Index = m.twin[e + 2]
+    s0: cython.int = m.seg[e]
+    s1: cython.int = m.seg[e + 1]
+    s2: cython.int = m.seg[e + 2]
+    m.corner[e], m.corner[e + 1], m.corner[e + 2] = c2, c0, c1
+    m.seg[e], m.seg[e + 1], m.seg[e + 2] = s2, s0, s1
+    bond(m, e, w2)
+    bond(m, e + 1, w0)
+    bond(m, e + 2, w1)
+    remember_corners(m, t)
 
 
 @cython.ccall
@@ -204,7 +277,7 @@ def chew_delete(r: Refiner, m: Mesh, segs: Subsegments, e: Index) -> cython.bint
                 break
             if queue_used(r) + 64 > r.hkey.shape[0]:
                 return False
-            if not delete_free_vertex(r, m, segs, a):
+            if not delete_free_vertex(r, m, segs, lprev(f)):  # the edge a -> o
                 break
             f = find_edge(m, o, d)  # the same side again
             if f < 0:

@@ -19,14 +19,16 @@ from __future__ import annotations
 import numpy as np
 
 import cython
+from cython.cimports.instrument.core.insert import flip
 from cython.cimports.instrument.core.locate import LOC_BLOCKED, LOC_FAILED, LOC_INSIDE, LOC_ON_EDGE, LOC_ON_VERTEX, line_walk, precise_walk
-from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, V_FREE, V_SEGMENT, Index, Mesh, lnext, lprev
-from cython.cimports.instrument.core.navigate import find_edge
+from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, V_FREE, V_SEGMENT, Index, Mesh, kill_triangle, lnext, lprev
+from cython.cimports.instrument.core.navigate import find_edge, remember_corners
 from cython.cimports.instrument.core.predicates import orient2d
 from cython.cimports.instrument.core.status import DONE, NEED_ROOM, PAUSE, PRECISION
 from cython.cimports.instrument.core.subsegments import Subsegments, new_record
 from cython.cimports.instrument.counters import (
     C_CIRCUMCENTER,
+    C_DELETED,
     C_DUPLICATE,
     C_QUEUE_POP,
     C_REJECTED,
@@ -36,16 +38,137 @@ from cython.cimports.instrument.counters import (
     C_UNDONE,
     C_WALK,
 )
-from cython.cimports.instrument.refine.cavity import collect_cavity, fill_cavity, forget_cavity, has_room, mark_both, new_vertex, order_rim
+from cython.cimports.instrument.refine.cavity import (
+    collect_cavity,
+    fill_cavity,
+    forget_cavity,
+    has_room,
+    inherit,
+    inherited,
+    mark_both,
+    new_vertex,
+    order_rim,
+)
 from cython.cimports.instrument.refine.criteria import steiner_point, test_fan, test_triangle
 from cython.cimports.instrument.refine.deletion import chew_delete
 from cython.cimports.instrument.refine.encroach import check_subsegment, enc_edge, enc_free, enc_push, in_lens, may_split, queue_side
 from cython.cimports.instrument.refine.queues import queue_clear, queue_compact, queue_pop, queue_push, queue_used
 from cython.cimports.instrument.refine.state import T_CIRCUMCENTER, T_OFFCENTER, T_REJECTED, T_SEGMENT, Refiner, trace_full, trace_row
-from cython.cimports.libc.math import sqrt
+from cython.cimports.libc.math import fabs, sqrt
 
 #: bad triangles taken between two PAUSEs
 PAUSE_EVERY = cython.declare(Index, 1 << 14)
+
+#: A vertex this close to a subsegment's line (relative to the largest
+#: coordinate of the three points) lies on it up to rounding: a few units in
+#: the last place, where split points that were moved onto the line once and
+#: printed with 17 digits land.
+ON_SEGMENT = cython.declare(cython.double, 2.0**-50)
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _on_subsegment(m: Mesh, a: Index, b: Index, c: Index) -> cython.bint:
+    """Does vertex ``c`` lie on the segment ``a b`` up to rounding, between its ends?"""
+    xy = m.xy
+    ex: cython.double = xy[b, 0] - xy[a, 0]
+    ey: cython.double = xy[b, 1] - xy[a, 1]
+    cx: cython.double = xy[c, 0] - xy[a, 0]
+    cy: cython.double = xy[c, 1] - xy[a, 1]
+    scale: cython.double = max(fabs(xy[a, 0]), fabs(xy[a, 1]), fabs(xy[b, 0]), fabs(xy[b, 1]), fabs(xy[c, 0]), fabs(xy[c, 1]))
+    cross: cython.double = ex * cy - ey * cx
+    dot: cython.double = ex * cx + ey * cy
+    return fabs(cross) <= ON_SEGMENT * scale * sqrt(ex * ex + ey * ey) and 0.0 < dot < ex * ex + ey * ey
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _split_at_apex(r: Refiner, m: Mesh, segs: Subsegments, e: Index, f: Index, triangles: cython.bint) -> cython.int:
+    """Split subsegment edge ``e`` (org o, dest d) at the existing vertex
+    ``c``, the apex of its side ``f`` (``e`` or its twin), which lies on it
+    within rounding: the sliver ``(o, d, c)`` goes (with a triangle on the
+    other side, flipping ``o d`` to ``c y``; without one, deleting the
+    sliver), and ``c o`` and ``c d`` become the two halves, as a split's
+    would.  No vertex is made.  Returns DONE, NEED_ROOM or PRECISION."""
+    xy = m.xy
+    o: Index = m.corner[lnext(e)]
+    d: Index = m.corner[lprev(e)]
+    c: Index = m.corner[f]
+    g: Index = m.twin[f]
+    n_c0: Index = m.twin[lprev(f)]  # the neighbours across the sliver's other edges
+    n_c1: Index = m.twin[lnext(f)]
+    bad: cython.bint = g == NO_EDGE and (n_c0 == NO_EDGE or n_c1 == NO_EDGE)  # a sliver ear of the mesh
+    u: Index
+    w: Index
+    y: Index
+    if g != NO_EDGE:  # the flip must leave two counter-clockwise triangles
+        u = m.corner[lnext(f)]
+        w = m.corner[lprev(f)]
+        y = m.corner[g]
+        bad = not (
+            orient2d(xy[c, 0], xy[c, 1], xy[u, 0], xy[u, 1], xy[y, 0], xy[y, 1]) > 0.0
+            and orient2d(xy[c, 0], xy[c, 1], xy[y, 0], xy[y, 1], xy[w, 0], xy[w, 1]) > 0.0
+        )
+    if bad:  # nothing to split at: Triangle's error
+        r.error_org = o
+        r.error_dest = d
+        return PRECISION
+    if segs.count >= segs.marker.shape[0] or queue_used(r) + 4 > r.hkey.shape[0] or r.enc_live + 4 > r.enc.shape[0]:
+        r.need = max(r.need, 4)
+        return NEED_ROOM
+    rec: Index = m.seg[e]
+    half: Index = new_record(segs, segs.marker[rec], segs.source[rec], segs.ends[rec, 0], segs.ends[rec, 1])
+    if m.vmark[c] == 0:
+        m.vmark[c] = segs.marker[rec]
+    if m.vtype[c] == V_FREE:
+        m.vtype[c] = V_SEGMENT
+    made: Index = 0
+    h0: Index
+    h1: Index
+    t1: Index
+    t2: Index
+    area: cython.double
+    attr: cython.double
+    if g != NO_EDGE:
+        # the two triangles on the far side take the far side's bound and attribute
+        area, attr = inherited(m, g // 3)
+        t1 = flip(m, f)  # (c, u, y) and (c, y, w) for f = u -> w
+        t2 = m.twin[3 * t1 + 1] // 3
+        inherit(m, t1, area, attr)
+        remember_corners(m, t1)
+        inherit(m, t2, area, attr)
+        remember_corners(m, t2)
+        h0 = 3 * t1 + 2  # c - u
+        h1 = 3 * t2 + 1  # w - c
+        r.fan[0] = t1
+        r.fan[1] = t2
+        made = 2
+    else:
+        kill_triangle(m, f // 3)
+        m.work[C_DELETED] += 1
+        m.twin[n_c0] = NO_EDGE
+        m.twin[n_c1] = NO_EDGE
+        remember_corners(m, n_c0 // 3)
+        remember_corners(m, n_c1 // 3)
+        h0 = n_c0
+        h1 = n_c1
+    # the half at o keeps the record, the half at d takes the new one (as a split)
+    u = m.corner[lnext(h0)]
+    w = m.corner[lprev(h0)]
+    mark_both(m, h0, rec if u == o or w == o else half)
+    u = m.corner[lnext(h1)]
+    w = m.corner[lprev(h1)]
+    mark_both(m, h1, rec if u == o or w == o else half)
+    m.work[C_SEGMENT_SPLIT] += 1
+    for i in range(made):
+        if triangles:
+            test_triangle(r, m, segs, r.fan[i])
+    check_subsegment(r, m, h0)
+    check_subsegment(r, m, h1)
+    trace_row(r, T_SEGMENT, made, 1 + made, 0, r.hsize)
+    return DONE
 
 
 @cython.ccall
@@ -98,6 +221,17 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
         r.error_org = o
         r.error_dest = d
         return PRECISION
+    # A vertex can lie on the subsegment within rounding, not exactly (a split
+    # point an earlier run wrote out, read back as an input vertex): it is
+    # then the apex on its side (any other triangle there would contain it).
+    # Splitting elsewhere leaves it encroaching every piece it lies on, the
+    # pieces shrink towards it until a split point lands on it or next to it,
+    # and the mesh gets a copy of it or slivers and runs out of precision
+    # (Triangle crashes).  Split at that vertex instead.
+    if _on_subsegment(m, o, d, m.corner[e]):
+        return _split_at_apex(r, m, segs, e, e, triangles)
+    if tw != NO_EDGE and _on_subsegment(m, o, d, m.corner[tw]):
+        return _split_at_apex(r, m, segs, e, tw, triangles)
     t1: Index = tw // 3 if tw != NO_EDGE else -1
     n: Index
     nb: Index

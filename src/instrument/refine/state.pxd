@@ -57,6 +57,7 @@ cdef class Refiner:
     cdef public long long[::1] fan   # the triangles an insertion made
     cdef public long long[:, ::1] bnd  # cavity rim edges: (outer twin, org, dest, record, edge)
     cdef public double[:, ::1] bval  # and the area bound and attribute each passes on
+    cdef public double[::1] carry    # the area bound each cavity triangle passes on (cavity.py)
     # the trace (empty: off)
     cdef public long long[:, ::1] trace  # rows: kind, created, deleted, walk steps, queue length
     cdef public Index ntrace

@@ -86,6 +86,7 @@ class Refiner:
         self.fan = np.zeros(slots, dtype=np.int64)
         self.bnd = np.zeros((slots, 5), dtype=np.int64)
         self.bval = np.zeros((slots, 2))
+        self.carry = np.zeros(slots)
         self.trace = np.zeros((1024 if trace else 0, 5), dtype=np.int64)
         self.ntrace = 0
 

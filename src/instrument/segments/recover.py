@@ -126,6 +126,21 @@ def _side(ax: cython.double, ay: cython.double, bx: cython.double, by: cython.do
     return 0.0 if fabs(s) <= tol * length else s
 
 
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _ahead(xy: cython.double[:, ::1], a: Index, b: Index, v: Index) -> cython.bint:
+    """For ``v`` on the line ``a -> b`` (up to ``_side``'s tolerance): is it
+    ``b`` or between ``a`` and ``b``?  A vertex past ``b`` (or behind ``a``)
+    is not on the segment: with the tolerance it can look collinear while
+    both ``a b`` and ``a v`` are edges (the guitar outline: taking it marked
+    an edge that is no segment and left the segment's own edge unmarked)."""
+    if v == b:
+        return True
+    dot: cython.double = (xy[v, 0] - xy[a, 0]) * (xy[b, 0] - xy[a, 0]) + (xy[v, 1] - xy[a, 1]) * (xy[b, 1] - xy[a, 1])
+    return 0.0 < dot < (xy[b, 0] - xy[a, 0]) * (xy[b, 0] - xy[a, 0]) + (xy[b, 1] - xy[a, 1]) * (xy[b, 1] - xy[a, 1])
+
+
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
@@ -157,9 +172,9 @@ def turn_to(m: Mesh, a: Index, b: Index, e0: Index) -> tuple[Index, cython.int]:
             m.work[C_ORIENT] += 2
             od = -_side(ax, ay, bx, by, xy[d, 0], xy[d, 1])
             ox = -_side(ax, ay, bx, by, xy[x, 0], xy[x, 1])
-            if od == 0.0 and (xy[d, 0] - ax) * (bx - ax) + (xy[d, 1] - ay) * (by - ay) > 0.0:
+            if od == 0.0 and _ahead(xy, a, b, d):
                 return e, 1
-            if ox == 0.0 and (xy[x, 0] - ax) * (bx - ax) + (xy[x, 1] - ay) * (by - ay) > 0.0:
+            if ox == 0.0 and _ahead(xy, a, b, x):
                 return e, 2
             if od > 0.0 and ox < 0.0:
                 return e, 0
