@@ -111,7 +111,15 @@ def run(
     build_vertex_edges(ms.mesh)
     tally_encroached(r, ms.mesh, ms.segs)
     guard = _Guard(limit, o.min_angle if o.q else 0.0, why, progress)
-    finish(ms, r, user, guard)
+    try:
+        finish(ms, r, user, guard)
+    except PrecisionError as exc:
+        if o.q and o.min_angle > limits.USUAL_ANGLE:  # the likely cause, and what to change
+            raise PrecisionError(
+                f"{exc}\n  A minimum angle of {o.min_angle:g} degrees is above {limits.USUAL_ANGLE:g}, where "
+                f"refinement usually ends: use a smaller angle, or -S to bound the Steiner points."
+            ) from None
+        raise
     ms.mesh.rotate_corners(1)
     build_vertex_edges(ms.mesh)
     return _trace_table(np.asarray(r.trace)[: r.ntrace]) if trace else None
