@@ -65,19 +65,7 @@ def cases():
 CASES = cases()
 IDS = [c[0] for c in CASES]
 
-#: The engine's own defect, not o2's: guitar.poly's segment 69 is not recovered
-#: under p (Triangle: 148 triangles, ours 156 and a hole in the PSLG; with -l the
-#: recovery raises), and pq30 then refines without end (until the vertex limit).
-ENGINE_DEFECTS = {
-    f"caow13__Rupers_Algorithm__guitar.poly-{opts}": "segment 69 of guitar.poly is not recovered (CDT defect)"
-    for opts in ("p", "pq30")
-}
-ENGINE_CASES = [
-    pytest.param(*c, id=c[0], marks=[pytest.mark.xfail(strict=True, reason=ENGINE_DEFECTS[c[0]])])
-    if c[0] in ENGINE_DEFECTS
-    else pytest.param(*c, id=c[0])
-    for c in CASES
-]
+ENGINE_CASES = [pytest.param(*c, id=c[0]) for c in CASES]
 
 
 def apply_rule(first_order: dict, with_edges: dict) -> dict:
