@@ -149,7 +149,8 @@ def _alpha(alpha_deg: float) -> float:
     return alpha
 
 
-def _integer(value: object, name: str) -> int:
+def as_integer(value: object, name: str) -> int:
+    """``value`` as an int (anything with __index__, not a bool), else TypeError naming it."""
     if isinstance(value, bool):
         raise TypeError(f"{name} must be an integer, not {value!r}")
     try:
@@ -183,7 +184,7 @@ def params(n: int, alpha_deg: float = 20.0) -> Params:
     non-integer n or a non-number angle.
     """
     r = smallest_r(alpha_deg)
-    n = _integer(n, "n")
+    n = as_integer(n, "n")
     if n < r + 1:
         raise ValueError(
             f"n must be >= r + 1 = {r + 1} for alpha_deg={alpha_deg!r} (r = {r} by "
@@ -212,7 +213,7 @@ def input_indices(n: int) -> dict[str, int | range]:
     ``top_right``: (0, a) and (1, a); ``apex``: P_0 = (1/(2n), h); ``box``: range of
     the 8 box points; ``first_steiner``: n + 12, the default index of P_1.
     """
-    n = _integer(n, "n")
+    n = as_integer(n, "n")
     if n < 1:
         raise ValueError(f"n must be >= 1, got {n}")
     return {
@@ -286,7 +287,7 @@ def example(n: int, alpha_deg: float = 20.0) -> dict[str, np.ndarray]:
 
 
 def _step(p: Params, k: int, last: int, what: str) -> int:
-    k = _integer(k, "k")
+    k = as_integer(k, "k")
     if not 0 <= k <= last:
         raise ValueError(
             f"{what} exists for 0 <= k <= {last} when n={p.n}, r={p.r} "
@@ -326,7 +327,7 @@ def apex_index(n: int, k: int, *, first_steiner: int | None = None) -> int:
     first index after the extended input of :func:`example`).  Raises ValueError for
     a negative or non-integer k.
     """
-    k = _integer(k, "k")
+    k = as_integer(k, "k")
     if k < 0:
         raise ValueError(f"k must be >= 0, got {k}")
     if k == 0:

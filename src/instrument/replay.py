@@ -173,7 +173,7 @@ def replay(
         raise ValueError(f"steiner must be one of {', '.join(refine.STEINER)}, not {steiner!r}")
     total = p.steps
     if stop_after is not None:
-        stop_after = quadratic._integer(stop_after, "stop_after")
+        stop_after = quadratic.as_integer(stop_after, "stop_after")
         if not 0 <= stop_after <= total:
             raise ValueError(f"stop_after must be in 0..{total} (the steps that exist for n={n}, r={p.r}), got {stop_after}")
         total = stop_after
