@@ -25,6 +25,10 @@ not depend on the frame.  It only needs, for each half, the hull edge leaving
 the half's last vertex (in the frame of the cut) and leaving its first
 vertex: ``hull_at[v]`` keeps the ghost of the hull edge leaving ``v``, which
 is unique for such extreme vertices.
+
+(About 580 lines: the cuts, the base cases and the merge are one algorithm,
+whose merge runs millions of times at 10^6 points and inlines every helper
+here.)
 """
 
 from __future__ import annotations
