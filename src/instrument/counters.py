@@ -14,6 +14,11 @@ Kernels increment ``work[C_NAME]``; ``as_dict`` gives the Python view that
   Triangle's statistics count them.
 * ``walk_steps``: triangles visited by point location.
 * ``flips``: edge flips of any kind.
+
+The counts (and the trace) do not depend on how much room the arrays had:
+a refinement step that stops because an array is full takes its tests back
+out of the counters before the driver grows the array and the step runs
+again (``tests/unit/test_room.py``).
 """
 
 from __future__ import annotations

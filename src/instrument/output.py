@@ -55,11 +55,20 @@ def assemble(ms, inp: dict, o) -> Result:
     arrays = m.arrays()
     corner, twin, seg = arrays["corner"], arrays["twin"], arrays["seg"]
     nv = m.nvert
-    tris = m.live_triangles()
-    tri_index = np.full(m.triangle_capacity, -1, dtype=np.int32)
-    tri_index[tris] = np.arange(tris.size, dtype=np.int32)
+    # (memory: at 10^6 points the output is as large as the mesh, so the
+    # temporaries here are kept to what each output needs)
+    tris = m.live_triangles().astype(np.int32)
     corners = corner.reshape(-1, 3)[tris]
     marker = np.asarray(ms.segs.marker)
+    tri_index = None
+
+    def slot_index() -> np.ndarray:
+        """The output number of the triangle in each slot (-1: none)."""
+        nonlocal tri_index
+        if tri_index is None:
+            tri_index = np.full(m.triangle_capacity, -1, dtype=np.int32)
+            tri_index[tris] = np.arange(tris.size, dtype=np.int32)
+        return tri_index
 
     if o.j:
         keep = np.zeros(nv, dtype=bool)
@@ -71,28 +80,28 @@ def assemble(ms, inp: dict, o) -> Result:
     if ms.dead is not None and ms.dead.size:
         keep[ms.dead] = False
     renumber = o.j or not keep.all()
-    new_id = (np.cumsum(keep) - 1).astype(np.int32)
+    new_id = (np.cumsum(keep) - 1).astype(np.int32) if renumber else None
 
     def ids(a):
         return np.take(new_id, a) if renumber else a.astype(np.int32, copy=False)
 
     def edge_listing() -> tuple[np.ndarray, np.ndarray]:
         """The edges as ``e`` lists them, and their markers."""
-        e = listed_edges(corner, twin, seg, tris, tri_index)
+        e = listed_edges(corner, twin, seg, tris, slot_index())
         if o.p or o.c:
             marks = np.where(seg[e] != NO_SEG, marker[np.maximum(seg[e], 0)], 0)
         else:
             marks = twin[e] == NO_EDGE
         return ids(ends_of(corner, e)), marks
 
-    verts = arrays["xy"][:nv][keep]
+    verts = arrays["xy"][:nv][keep] if renumber else arrays["xy"][:nv].copy()
     vattrs = None
     if "vertex_attributes" in inp:
         attrs = np.zeros((nv, inp["vertex_attributes"].shape[1]))
         attrs[: ms.n_input] = inp["vertex_attributes"]
         interpolate(m, attrs, ms.n_input)
         vattrs = attrs[keep]
-    vmarks = arrays["vmark"][:nv][keep]
+    vmarks = arrays["vmark"][:nv][keep] if renumber else arrays["vmark"][:nv]
     triangles = ids(corners)
     if o.order == 2 and tris.size:  # the midpoint nodes come after every other vertex
         ends, marks = edge_listing()
@@ -115,7 +124,7 @@ def assemble(ms, inp: dict, o) -> Result:
         if o.A and arrays["attribute"].shape[0]:
             _put(out, "triangle_attributes", arrays["attribute"][tris].reshape(-1, 1))
     if (o.p or o.c) and not o.P:
-        constrained = listed_edges(corner, twin, seg, tris, tri_index, constrained=True)
+        constrained = listed_edges(corner, twin, seg, tris, slot_index(), constrained=True)
         # a subsegment made on triangle edge a -> b is listed b -> a (Triangle's order)
         _put(out, "segments", ids(ends_of(corner, constrained)[:, ::-1]))
         if not o.B:
@@ -131,7 +140,7 @@ def assemble(ms, inp: dict, o) -> Result:
             _put(out, "edge_markers", _col(marks))
     if o.n:
         tw = twin.reshape(-1, 3)[tris]
-        nb = np.where(tw == NO_EDGE, -1, tri_index[np.maximum(tw, 0) // 3])
+        nb = np.where(tw == NO_EDGE, -1, slot_index()[np.maximum(tw, 0) // 3])
         _put(out, "neighbors", nb.astype(np.int32))
     return out
 

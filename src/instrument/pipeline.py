@@ -15,6 +15,7 @@ triangles (reconstruct/).  Every stage works on one ``MeshState``
 from __future__ import annotations
 
 import dataclasses
+import os
 
 import numpy as np
 
@@ -61,6 +62,7 @@ def triangulate(
     triunsuitable=None,
     max_vertices: int | None = None,
     progress=None,
+    threads: int | None = None,
 ) -> Result:
     """Triangulate, mesh or refine ``tri`` (the `triangle` package's dict) under
     Triangle's switches ``opts`` (library rules: no dash, 0-based indices).
@@ -80,18 +82,25 @@ def triangulate(
     area bound, see ``instrument.limits``) instead of running out of memory;
     a minimum angle above 34 degrees adds a warning to ``warnings``.
     ``progress(vertices, limit)`` is called now and then during refinement.
+    The Delaunay triangulation of a large input runs on ``threads`` threads
+    (default: the cores this process may use); the mesh and the counts are
+    the same on any number.
     With ``V`` (and no ``Q``) the statistics are printed to stdout, as
     Triangle's library mode does.
     """
     o = parse(opts)
     inp = validate(tri, o)
     strategy_id(strategy)  # reject unknown names before any work
+    if threads is None:
+        threads = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1
+    elif threads < 1:
+        raise ValueError(f"threads must be at least 1, not {threads}")
     work = counters.new_work()
     attrs = None
     if o.r:  # the given triangles, as they are
         ms, inp, attrs = reconstruct(tri, inp, o, work, seed)
     else:
-        ms = mesh_input(inp, o, work, seed)
+        ms = mesh_input(inp, o, work, seed, threads=threads)
     refining = o.quality and ms.mesh.nlive > 0
     if refining and o.r:
         make_delaunay(ms)  # Bowyer-Watson needs a Delaunay mesh
@@ -174,20 +183,23 @@ def validate(tri: dict, o: Options) -> dict:
     return out
 
 
-def mesh_input(inp: dict, o: Options, work: np.ndarray, seed: int = 0) -> MeshState:
+def mesh_input(inp: dict, o: Options, work: np.ndarray, seed: int = 0, threads: int = 1, room: int = 16) -> MeshState:
     """The (constrained) Delaunay triangulation of the validated input
     ``inp`` under ``o``, carved, with the hull as segments where refinement
-    needs them: everything ``triangulate`` does before refining."""
+    needs them: everything ``triangulate`` does before refining.  ``room``
+    vertices (and twice as many triangles) are reserved beyond the input;
+    recovery and refinement grow the mesh when they need more, and neither
+    the mesh nor the counts depend on it."""
     xy = inp["vertices"]
     nseg = len(inp.get("segments", ()))
-    spare = 2 * nseg + 16
+    spare = room
     method = "incremental" if o.i else "vertical" if o.l else "divconq"  # -F: no sweepline; divide and conquer
     m, dup = delaunay(
         xy, work, method=method, seed=seed, extra_vertices=spare, extra_triangles=2 * spare,
-        parents="vertex_attributes" in inp,
+        parents="vertex_attributes" in inp, constraints=False, threads=threads,
     )
     np.asarray(m.vmark)[: xy.shape[0]] = inp["vertex_markers"]
-    ms = MeshState(mesh=m, segs=Subsegments(max(16, 2 * spare)), n_input=xy.shape[0], dup=dup, n_triangles_initial=m.nlive)
+    ms = MeshState(mesh=m, segs=Subsegments(nseg + room), n_input=xy.shape[0], dup=dup, n_triangles_initial=m.nlive)
     for i in np.flatnonzero(dup >= 0):
         ms.warnings.append(f"Warning:  A duplicate vertex at ({xy[i, 0]:.12g}, {xy[i, 1]:.12g}) appeared and was ignored.")
     if o.p:

@@ -74,7 +74,7 @@ SHORT_HELP = f"""{USAGE}
     -h  Help:  Detailed instructions for ruppert.
 Long options: --strategy NAME  --steiner offcenter|circumcenter  --seed N
     --work-json PATH  --trace PATH  --format FMT[,FMT...]  --progress
-    --max-vertices N  --version
+    --max-vertices N  --threads N  --version
 """
 
 LONG_HELP = f"""ruppert: a two-dimensional quality mesh generator and Delaunay triangulator
@@ -161,6 +161,10 @@ Long options (ruppert's own):
                         raised to the input plus -S's budget, and at most
                         what half of this machine's memory holds.  An area
                         bound whose mesh needs more fails at once.
+    --threads N         Threads for the Delaunay triangulation of a large
+                        input (default: every core this process may use).
+                        The mesh and the work counts are the same on any
+                        number.
     --version           Print ruppert's version.
 
 A minimum angle above 34 degrees prints a warning: Triangle's documentation
@@ -188,7 +192,7 @@ TRACE_HEADER = ("kind", "created", "deleted", "walk_steps", "queue_length")
 #: meshio formats whose extension meshio's table does not give.
 FORMAT_EXTENSIONS = {"gmsh22": ".msh", "gmsh": ".msh", "vtk42": ".vtk", "vtk51": ".vtk"}
 
-_LONG_WITH_VALUE = ("--strategy", "--steiner", "--seed", "--work-json", "--trace", "--format", "--max-vertices")
+_LONG_WITH_VALUE = ("--strategy", "--steiner", "--seed", "--work-json", "--trace", "--format", "--max-vertices", "--threads")
 _LONG_FLAGS = ("--progress", "--help", "--version")
 
 #: A run shows its progress on a terminal once it has taken this long (seconds).
@@ -214,6 +218,7 @@ def _long_parser() -> argparse.ArgumentParser:
     p.add_argument("--format", dest="formats", action="append", default=[])
     p.add_argument("--progress", action="store_true")
     p.add_argument("--max-vertices", dest="max_vertices", type=_positive_int, default=None)
+    p.add_argument("--threads", type=_positive_int, default=None)
     p.add_argument("--help", action="store_true")
     p.add_argument("--version", action="store_true")
     return p
@@ -459,6 +464,8 @@ def _engine_kwargs(long: argparse.Namespace) -> dict[str, Any]:
         kwargs["trace"] = True
     if long.max_vertices is not None:
         kwargs["max_vertices"] = long.max_vertices
+    if long.threads is not None:
+        kwargs["threads"] = long.threads
     return kwargs
 
 

@@ -16,6 +16,7 @@ from .infect import infect_hull, locate_points, plague, spread_regions
 def carve(ms: MeshState, o: Options, holes: np.ndarray | None, regions: np.ndarray | None, xy_in: np.ndarray) -> None:
     """Remove concavities and holes, then spread regions (see the module docstring)."""
     m = ms.mesh
+    m.add_constraint_tables()
     slots = m.triangle_capacity
     lo = xy_in.min(axis=0)
     hi = xy_in.max(axis=0)

@@ -23,14 +23,14 @@ cdef class Mesh:
     # per vertex (rows 0 .. nvert-1 in use; all grow together, see grow_vertices)
     cdef public double[:, ::1] xy          # coordinates
     cdef public int[::1] vmark             # boundary marker
-    cdef public long long[::1] vtri        # an edge whose origin is the vertex (a hint, may be stale)
+    cdef public long long[::1] vtri        # an edge whose origin is the vertex (a hint, may be stale), or no rows
     cdef public signed char[::1] vtype     # refinement's kind of vertex (input, segment, free, dead)
     cdef public double[:, ::1] parent      # attribute interpolation record, or no rows
-    cdef public long long[::1] vslot       # scratch, -1 between uses
+    cdef public long long[::1] vslot       # scratch, -1 between uses, or no rows
     # per triangle slot (all grow together, see grow_triangles)
     cdef public int[::1] corner            # 3 per slot, counter-clockwise
     cdef public int[::1] twin              # 3 per slot: the same edge seen from the neighbour
-    cdef public int[::1] seg               # 3 per slot: subsegment record, or NO_SEG
+    cdef public int[::1] seg               # 3 per slot: subsegment record, or NO_SEG; or no rows
     cdef public int[::1] stamp             # > 0 alive; a queue entry is current iff its stamp still matches
     cdef public int[::1] free              # stack of dead slots
     cdef public double[::1] area_bound     # per-triangle area bound (<= 0: none), or no rows
@@ -100,9 +100,10 @@ cdef inline Index new_triangle(Mesh m, Index a, Index b, Index c) noexcept nogil
         m.twin[e] = NO_EDGE
         m.twin[e + 1] = NO_EDGE
         m.twin[e + 2] = NO_EDGE
-        m.seg[e] = NO_SEG
-        m.seg[e + 1] = NO_SEG
-        m.seg[e + 2] = NO_SEG
+        if m.seg.shape[0] > 0:  # a mesh without constraint tables (Mesh.add_constraint_tables)
+            m.seg[e] = NO_SEG
+            m.seg[e + 1] = NO_SEG
+            m.seg[e + 2] = NO_SEG
     return t
 
 
@@ -124,5 +125,6 @@ cdef inline Index next_random(Mesh m) noexcept nogil:
 
 
 cpdef Index remove_ghosts(Mesh m) noexcept nogil
+cpdef void relabel_corners(Mesh m, long long[::1] label) noexcept nogil
 cpdef void set_parent(Mesh m, Index v, Index p0, Index p1, Index p2, double s, double t) noexcept nogil
 cpdef void interpolate_attributes(Mesh m, double[:, ::1] out, Index first) noexcept nogil

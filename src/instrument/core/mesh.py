@@ -28,9 +28,11 @@ triangle slot: the stages add no side tables of their own.  Growing the mesh
 (``grow_vertices``, ``grow_triangles``) therefore grows every such array at
 once, and no kernel can index a table that growth left behind.  Optional
 tables (per-triangle area bounds and attributes, the vertices' attribute
-records) have no rows when the run does not use them, and grow only if
-they have rows.  Kernels never allocate: when a mesh is full they report
-it, and the Python side grows the mesh and calls them again.
+records, and the constraint tables ``seg``, ``vtri`` and ``vslot`` that a
+plain Delaunay triangulation does without) have no rows when the run does
+not use them, and grow only if they have rows.  Kernels never allocate:
+when a mesh is full they report it, and the Python side grows the mesh and
+calls them again.
 
 The primitives below are compiled from ``mesh.pxd`` (where every kernel
 inlines them); the definitions at the end of this file are the same
@@ -84,25 +86,26 @@ class Mesh:
         parents: bool = False,
         area_bounds: bool = False,
         attributes: bool = False,
+        constraints: bool = True,
         work=None,
     ):
         """A mesh with no triangles, holding the vertices ``xy`` (which it
         copies), with room for ``vertices`` vertices in all (default: just
         those) and ``triangles`` triangle slots, and the optional tables
-        asked for."""
+        asked for (``constraints``: see ``add_constraint_tables``)."""
         xy = np.asarray(xy, dtype=np.float64).reshape(-1, 2)
         n = xy.shape[0]
         cap = max(n, int(vertices if vertices is not None else n), 1)
         slots = max(int(triangles), 4)
         self.xy = _widened(xy, cap, 0.0)
         self.vmark = np.zeros(cap, dtype=np.int32)
-        self.vtri = np.full(cap, -1, dtype=np.int64)
+        self.vtri = np.full(cap if constraints else 0, -1, dtype=np.int64)
         self.vtype = np.zeros(cap, dtype=np.int8)
         self.parent = np.full((cap if parents else 0, PARENT_COLUMNS), -1.0)
-        self.vslot = np.full(cap, -1, dtype=np.int64)
+        self.vslot = np.full(cap if constraints else 0, -1, dtype=np.int64)
         self.corner = np.full(3 * slots, GHOST, dtype=np.int32)
         self.twin = np.full(3 * slots, NO_EDGE, dtype=np.int32)
-        self.seg = np.full(3 * slots, NO_SEG, dtype=np.int32)
+        self.seg = np.full(3 * slots if constraints else 0, NO_SEG, dtype=np.int32)
         self.stamp = np.zeros(slots, dtype=np.int32)
         self.free = np.zeros(slots, dtype=np.int32)
         self.area_bound = np.full(slots if area_bounds else 0, -1.0)
@@ -114,6 +117,26 @@ class Mesh:
         self.nlive = 0
         self.work = new_work() if work is None else work
         self.rng = 12345
+
+    def partner(self) -> Mesh:
+        """A mesh over the same tables with counts and work of its own, for a
+        thread that builds a part of the triangulation in slots and vertices
+        no other thread touches (``delaunay``'s parallel divide and
+        conquer).  Its counts start at zero; set ``nslot`` to the first slot
+        it may take."""
+        other = Mesh.__new__(Mesh)
+        for name in (
+            "xy", "vmark", "vtri", "vtype", "parent", "vslot", "corner", "twin", "seg",
+            "stamp", "free", "area_bound", "attribute", "tflag",
+        ):  # fmt: skip
+            setattr(other, name, getattr(self, name))
+        other.nvert = self.nvert
+        other.nslot = 0
+        other.nfree = 0
+        other.nlive = 0
+        other.work = new_work()
+        other.rng = self.rng
+        return other
 
     # ------------------------------------------------------------ capacity
 
@@ -135,11 +158,12 @@ class Mesh:
             return
         self.xy = _widened(self.xy, cap, 0.0)
         self.vmark = _widened(self.vmark, cap, 0)
-        self.vtri = _widened(self.vtri, cap, -1)
         self.vtype = _widened(self.vtype, cap, 0)
         if self.parent.shape[0]:
             self.parent = _widened(self.parent, cap, -1.0)
-        self.vslot = _widened(self.vslot, cap, -1)
+        if self.has_constraint_tables:
+            self.vtri = _widened(self.vtri, cap, -1)
+            self.vslot = _widened(self.vslot, cap, -1)
 
     def grow_triangles(self, room: int, *, exact: bool = False) -> None:
         """If fewer than ``room`` triangles can be allocated, add room for
@@ -152,7 +176,8 @@ class Mesh:
         cap = want if exact else max(2 * old, want)
         self.corner = _widened(self.corner, 3 * cap, GHOST)
         self.twin = _widened(self.twin, 3 * cap, NO_EDGE)
-        self.seg = _widened(self.seg, 3 * cap, NO_SEG)
+        if self.has_constraint_tables:
+            self.seg = _widened(self.seg, 3 * cap, NO_SEG)
         self.stamp = _widened(self.stamp, cap, 0)
         self.free = _widened(self.free, cap, 0)
         if self.area_bound.shape[0]:
@@ -164,6 +189,23 @@ class Mesh:
     def spare(self) -> int:
         """Triangles that can still be allocated without growing."""
         return self.nfree + self.stamp.shape[0] - self.nslot
+
+    @property
+    def has_constraint_tables(self) -> bool:
+        return self.seg.shape[0] > 0
+
+    def add_constraint_tables(self) -> None:
+        """Give the mesh the tables that segment recovery, carving and
+        refinement use, unless it has them: ``seg`` (every edge
+        unconstrained), ``vtri`` (no hints yet) and ``vslot`` (clear).  A
+        plain Delaunay triangulation never needs them, and without them its
+        mesh takes a third less memory; every stage that reads them calls
+        this first, and ``new_triangle`` writes ``seg`` only when it has rows."""
+        if self.has_constraint_tables:
+            return
+        self.seg = np.full(3 * self.stamp.shape[0], NO_SEG, dtype=np.int32)
+        self.vtri = np.full(self.xy.shape[0], -1, dtype=np.int64)
+        self.vslot = np.full(self.xy.shape[0], -1, dtype=np.int64)
 
     def add_area_bounds(self, bounds) -> None:
         """Start the per-triangle area bounds with ``bounds`` (one per slot in use)."""
@@ -182,7 +224,7 @@ class Mesh:
         if not ghosts:
             c = np.asarray(self.corner)[: 3 * n].reshape(-1, 3)
             live &= (c >= 0).all(axis=1)
-        return np.flatnonzero(live).astype(np.int64)
+        return np.flatnonzero(live).astype(np.int64, copy=False)
 
     def rotate_corners(self, shift: int) -> None:
         """Renumber every triangle's corners in place: new corner ``k`` is
@@ -192,6 +234,7 @@ class Mesh:
         n = self.nslot
         if n == 0 or shift % 3 == 0:
             return
+        self.add_constraint_tables()
         a = self.arrays()
         k = np.arange(3 * n) % 3
         old = np.arange(3 * n) - k + (k + shift) % 3  # the old edge each new edge number takes over
@@ -229,6 +272,20 @@ def remove_ghosts(m: Mesh) -> Index:
                 kill_triangle(m, t)
                 break
     return hull
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def relabel_corners(m: Mesh, label: cython.longlong[::1]) -> cython.void:
+    """Vertex ``v`` becomes ``label[v]`` in the corners of every slot used
+    (ghost corners stay): in place, where numpy would hold several copies
+    of the corner table at once."""
+    v: Index
+    for e in range(3 * m.nslot):
+        v = m.corner[e]
+        if v >= 0:
+            m.corner[e] = cython.cast(cython.int, label[v])
 
 
 @cython.ccall
@@ -328,7 +385,8 @@ if not cython.compiled:
             m.corner[e + 2] = c
             for k in range(3):
                 m.twin[e + k] = NO_EDGE
-                m.seg[e + k] = NO_SEG
+                if m.seg.shape[0] > 0:
+                    m.seg[e + k] = NO_SEG
         return t
 
     def kill_triangle(m, t):

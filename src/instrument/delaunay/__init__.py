@@ -23,9 +23,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..core.mesh import Mesh, remove_ghosts
+from ..core.mesh import Mesh, relabel_corners, remove_ghosts
 from ..counters import C_DUPLICATE
-from . import divconq, incremental
+from . import divconq, incremental, parallel
 
 METHODS = ("divconq", "vertical", "incremental")
 
@@ -38,6 +38,7 @@ def delaunay(
     seed: int = 0,
     extra_vertices: int = 0,
     extra_triangles: int = 0,
+    threads: int = 1,
     **tables,
 ) -> tuple[Mesh, np.ndarray]:
     """Delaunay triangulation of the rows of ``xy`` (finite float64 coordinates).
@@ -48,7 +49,11 @@ def delaunay(
     ``method`` is one of ``METHODS``; ``seed`` drives the incremental
     method's insertion order.  ``extra_vertices`` and ``extra_triangles``
     reserve room for later stages; ``tables`` are ``Mesh``'s optional
-    tables (``parents``, ``area_bounds``, ``attributes``).
+    tables (``parents``, ``area_bounds``, ``attributes``, ``constraints``;
+    the incremental method always has the constraint tables: its flips
+    keep subsegment records).  Divide and
+    conquer runs on up to ``threads`` threads on large inputs (parallel.py),
+    with the same result as on one.
     """
     if method not in METHODS:
         raise ValueError(f"unknown Delaunay method {method!r}")
@@ -71,10 +76,19 @@ def delaunay(
             work[C_DUPLICATE] += int(n - new.sum())
             order = order[new]
     ids = order.astype(np.int64)
-    pts = divconq.cut_order(xy, ids, method == "divconq")
-    m = Mesh(pts, 2 * n + 8 + extra_triangles, vertices=n + extra_vertices, work=work, **tables)
-    del pts
-    divconq.triangulate_sorted(m, ids.size, method == "divconq")
+    alternate = method == "divconq"
+    top = parallel.plan(ids.size, alternate, threads)
+    if top.halves is None:
+        pts = divconq.cut_order(xy, ids, alternate)
+        m = Mesh(pts, 2 * n + 8 + extra_triangles, vertices=n + extra_vertices, work=work, **tables)
+        del pts
+        divconq.triangulate_sorted(m, ids.size, alternate)
+    else:
+        with parallel.workers(top) as pool:
+            pts = parallel.cut_order(xy, ids, alternate, top, pool)
+            m = Mesh(pts, 2 * n + 8 + extra_triangles, vertices=n + extra_vertices, work=work, **tables)
+            del pts
+            parallel.triangulate(m, top, alternate, pool)
     remove_ghosts(m)
     _restore_numbering(m, xy, ids)
     return m, dup
@@ -84,9 +98,7 @@ def _restore_numbering(m: Mesh, xy: np.ndarray, ids: np.ndarray) -> None:
     """Corner ``i`` of the kernel's numbering is input vertex ``ids[i]``; put
     the input's own numbering and coordinates back."""
     n = xy.shape[0]
-    used = np.asarray(m.corner)[: 3 * m.nslot]
-    live = used >= 0
-    used[live] = ids[used[live]]
+    relabel_corners(m, ids)
     np.asarray(m.xy)[:n] = xy
     m.nvert = n
 
@@ -94,6 +106,7 @@ def _restore_numbering(m: Mesh, xy: np.ndarray, ids: np.ndarray) -> None:
 def _incremental(xy, work, seed, extra_vertices, extra_triangles, tables) -> tuple[Mesh, np.ndarray]:
     """The randomized incremental method (see incremental.py)."""
     n = xy.shape[0]
+    tables = dict(tables, constraints=True)
     order = incremental.insertion_order(xy, np.arange(n), seed)  # first: its temporaries die before the mesh exists
     m = Mesh(xy[order], 2 * n + 8 + extra_triangles, vertices=n + extra_vertices, work=work, **tables)
     dup = np.full(n, -1, dtype=np.int64)
@@ -122,11 +135,9 @@ def _keep_lowest_copy(m: Mesh, dup: np.ndarray) -> None:
     moved = kept[best[kept] != kept]
     if moved.size == 0:
         return
-    label = np.arange(dup.size)
+    label = np.arange(dup.size, dtype=np.int64)
     label[moved] = best[moved]
-    corner = np.asarray(m.corner)[: 3 * m.nslot]
-    live = corner >= 0
-    corner[live] = label[corner[live]]
+    relabel_corners(m, label)
     group = np.concatenate([copies, np.unique(moved)])
     root = np.where(dup[group] >= 0, dup[group], group)
     dup[group] = best[root]

@@ -33,6 +33,8 @@ here.)
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 
 import cython
@@ -128,13 +130,9 @@ def _select(pts: cython.double[:, ::1], ids: cython.longlong[::1], lo: Index, hi
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
-def _cut(pts: cython.double[:, ::1], ids: cython.longlong[::1], stack: cython.longlong[:, ::1]) -> cython.void:
-    """The recursion of ``cut_order`` on an explicit stack (depth <= 64)."""
-    n: Index = ids.shape[0]
-    half: Index = n >> 1
-    stack[0, 0], stack[0, 1], stack[0, 2] = 0, half, 1
-    stack[1, 0], stack[1, 1], stack[1, 2] = half, n, 1
-    top: Index = 2
+def _cut(pts: cython.double[:, ::1], ids: cython.longlong[::1], stack: cython.longlong[:, ::1], top: Index) -> cython.void:
+    """The recursion of ``cut_order`` on an explicit stack (depth <= 64),
+    from the ``top`` groups (lo, hi, frame of their cut) already on it."""
     lo: Index
     hi: Index
     f: Index
@@ -156,22 +154,46 @@ def _cut(pts: cython.double[:, ::1], ids: cython.longlong[::1], stack: cython.lo
         top += 2
 
 
+def cut_group(pts, ids, lo: int, hi: int, frame: int) -> None:
+    """Put rows ``lo .. hi-1`` of ``pts`` (and ``ids``) in cut order, the
+    group being cut in ``frame`` (its rows already lie in its parent's cut);
+    releases the GIL, so groups that do not overlap can be cut at once."""
+    p: cython.double[:, ::1] = pts
+    i: cython.longlong[::1] = ids
+    s: cython.longlong[:, ::1] = np.empty((130, 3), dtype=np.int64)
+    s[0, 0], s[0, 1], s[0, 2] = lo, hi, frame
+    with cython.nogil:
+        _cut(p, i, s, 1)
+
+
+def split_group(pts, ids, lo: int, hi: int, frame: int) -> int:
+    """Cut rows ``lo .. hi-1`` once, at their median in ``frame``; returns
+    where the second half starts (the halves are then cut in ``1 - frame``)."""
+    p: cython.double[:, ::1] = pts
+    i: cython.longlong[::1] = ids
+    mid: Index = lo + ((hi - lo) >> 1)
+    a: Index = lo
+    b: Index = hi
+    f: Index = frame
+    with cython.nogil:
+        _select(p, i, a, b, mid, f)
+    return mid
+
+
 def cut_order(xy, ids, alternate: bool):
     """Order ``ids`` (int64, distinct points sorted in frame 0) for the
     recursion, in place, and return their coordinates in that order: each
     group of more than three is split at ``size >> 1`` into halves separated
     in the frame of its cut, the frames alternating from 0 at the top
-    (``alternate``) or always 0; groups of two or three end in frame 0 order."""
+    (``alternate``) or always 0; groups of two or three end in frame 0 order.
+    (The top cut is in frame 0, where the points already are sorted.)"""
     pts = np.ascontiguousarray(np.asarray(xy)[ids], dtype=np.float64)
     n = ids.shape[0]
     if not alternate or n <= 3:
         return pts
-    stack = np.empty((130, 3), dtype=np.int64)
-    p: cython.double[:, ::1] = pts
-    i: cython.longlong[::1] = ids
-    s: cython.longlong[:, ::1] = stack
-    with cython.nogil:
-        _cut(p, i, s)
+    half = n >> 1
+    cut_group(pts, ids, 0, half, 1)
+    cut_group(pts, ids, half, n, 1)
     return pts
 
 
@@ -514,21 +536,43 @@ def _base(m: Mesh, hull_at: cython.int[::1], lo: Index, hi: Index, found: cython
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
+def _merge_found(m: Mesh, hull_at: cython.int[::1], found: cython.longlong[:, ::1], a: Index, b: Index, f: Index) -> cython.void:
+    """Merge the triangulated groups whose extremes are ``found[a]`` (left)
+    and ``found[b]`` (right), cut in frame ``f``; the merged group's
+    extremes replace ``found[a]``."""
+    xy = m.xy
+    top_edge: Index
+    if f == 0:
+        top_edge = _merge(m, hull_at, found[a, 1], found[b, 0])
+    else:
+        top_edge = _merge(m, hull_at, found[a, 3], found[b, 2])
+    found[a, 0] = _first(xy, found[a, 0], found[b, 0], 0)
+    found[a, 1] = _last(xy, found[a, 1], found[b, 1], 0)
+    found[a, 2] = _first(xy, found[a, 2], found[b, 2], 1)
+    found[a, 3] = _last(xy, found[a, 3], found[b, 3], 1)
+    for k in range(4):
+        _find_hull_edge(m, hull_at, found[a, k], top_edge)
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
 def _build(
-    m: Mesh, hull_at: cython.int[::1], n: Index, alternate: cython.bint,
+    m: Mesh, hull_at: cython.int[::1], lo0: Index, hi0: Index, f0: Index, alternate: cython.bint,
     frames: cython.longlong[:, ::1], found: cython.longlong[:, ::1],
 ) -> cython.void:
-    """Triangulate points ``0 .. n-1`` (distinct, in cut order, n >= 2).
+    """Triangulate points ``lo0 .. hi0-1`` (distinct, in cut order, at least
+    two), a group cut in frame ``f0``; its first and last points in frames
+    0 and 1 end in ``found[0]``.
 
     The recursion runs on explicit stacks: ``frames`` rows are (lo, hi,
     frame of the cut, stage), and each finished group leaves its first and
     last points in frames 0 and 1 (first0, last0, first1, last1) on
     ``found``.
     """
-    xy = m.xy
-    frames[0, 0] = 0
-    frames[0, 1] = n
-    frames[0, 2] = 0
+    frames[0, 0] = lo0
+    frames[0, 1] = hi0
+    frames[0, 2] = f0
     frames[0, 3] = 0
     top: Index = 1
     nfound: Index = 0
@@ -537,9 +581,6 @@ def _build(
     f: Index
     stage: Index
     mid: Index
-    a: Index
-    b: Index
-    top_edge: Index
     while top > 0:
         lo, hi, f, stage = frames[top - 1, 0], frames[top - 1, 1], frames[top - 1, 2], frames[top - 1, 3]
         if hi - lo <= 3:
@@ -555,32 +596,55 @@ def _build(
             frames[top, 3] = 0
             top += 1
         else:
-            a = nfound - 2
-            b = nfound - 1
-            if f == 0:
-                top_edge = _merge(m, hull_at, found[a, 1], found[b, 0])
-            else:
-                top_edge = _merge(m, hull_at, found[a, 3], found[b, 2])
-            found[a, 0] = _first(xy, found[a, 0], found[b, 0], 0)
-            found[a, 1] = _last(xy, found[a, 1], found[b, 1], 0)
-            found[a, 2] = _first(xy, found[a, 2], found[b, 2], 1)
-            found[a, 3] = _last(xy, found[a, 3], found[b, 3], 1)
-            for k in range(4):
-                _find_hull_edge(m, hull_at, found[a, k], top_edge)
+            _merge_found(m, hull_at, found, nfound - 2, nfound - 1, f)
             nfound -= 1
             top -= 1
+
+
+@functools.lru_cache(maxsize=None)
+def group_slots(n: int) -> int:
+    """Triangle slots the triangulation of a group of ``n`` >= 2 points uses:
+    2 for a pair, 4 for a triple (a triangle and three ghosts, or four
+    ghosts), and 2 for each merge (its bottom and top ghosts; a merge
+    reuses the slots of the edges it deletes).  Known in advance, so the
+    groups of a parallel run can take the slots the sequential run gives
+    them."""
+    if n <= 3:
+        return 2 if n == 2 else 4
+    half = n >> 1
+    return group_slots(half) + group_slots(n - half) + 2
+
+
+def triangulate_group(m: Mesh, hull_at, lo: int, hi: int, frame: int, alternate: bool) -> tuple[int, int, int, int]:
+    """Triangulate points ``lo .. hi-1`` (a group cut in ``frame``) with
+    ghosts around its hull, allocating from ``m.nslot`` on; returns its
+    first and last points in frames 0 and 1.  Releases the GIL."""
+    h: cython.int[::1] = hull_at
+    frames: cython.longlong[:, ::1] = np.zeros((130, 4), dtype=np.int64)
+    found: cython.longlong[:, ::1] = np.zeros((130, 4), dtype=np.int64)
+    a: Index = lo
+    b: Index = hi
+    f: Index = frame
+    alt: cython.bint = alternate
+    with cython.nogil:
+        _build(m, h, a, b, f, alt, frames, found)
+    return found[0, 0], found[0, 1], found[0, 2], found[0, 3]
+
+
+def merge_groups(m: Mesh, hull_at, left, right, frame: int) -> tuple[int, int, int, int]:
+    """Merge two triangulated groups, ``left`` and ``right`` their extremes
+    (as ``triangulate_group`` returns them), cut in ``frame``; returns the
+    merged group's extremes.  Releases the GIL."""
+    h: cython.int[::1] = hull_at
+    found: cython.longlong[:, ::1] = np.array([left, right], dtype=np.int64)
+    f: Index = frame
+    with cython.nogil:
+        _merge_found(m, h, found, 0, 1, f)
+    return found[0, 0], found[0, 1], found[0, 2], found[0, 3]
 
 
 def triangulate_sorted(m: Mesh, n: int, alternate: bool) -> None:
     """Triangulate points ``0 .. n-1`` of ``m`` (distinct, in cut order) with
     ghosts around the hull; ``m`` has room for 2n + 8 triangles."""
-    if n < 2:
-        return
-    hull_at = np.full(n, -1, dtype=np.int32)
-    h: cython.int[::1] = hull_at
-    frames: cython.longlong[:, ::1] = np.zeros((130, 4), dtype=np.int64)
-    found: cython.longlong[:, ::1] = np.zeros((130, 4), dtype=np.int64)
-    count: Index = n
-    alt: cython.bint = alternate
-    with cython.nogil:
-        _build(m, h, count, alt, frames, found)
+    if n >= 2:
+        triangulate_group(m, np.full(n, -1, dtype=np.int32), 0, n, 0, alternate)

@@ -34,7 +34,7 @@ from ..state import MeshState
 from .order import strategy_id
 from ..switches import Options
 from .criteria import queue_triangles
-from .queues import queue_compact, queue_used
+from .queues import queue_used
 from .splits import refine, tally_encroached
 from .state import TRACE_KINDS, Config, Refiner
 
@@ -131,6 +131,7 @@ def new_refiner(ms: MeshState, o: Options, strategy: str, steiner: str, trace: b
     ``python_test``: a Python ``triunsuitable`` runs between kernel rounds,
     so the kernel's own ``-u`` test stays off."""
     m = ms.mesh
+    m.add_constraint_tables()
     slots = m.triangle_capacity
     cfg = Config(o, strategy_id(strategy), steiner == "offcenter", python_test)
     return Refiner(
@@ -146,8 +147,6 @@ def grow_refiner(ms: MeshState, r: Refiner) -> None:
     ms.grow(vertices=16, triangles=need, records=16)
     slots = ms.mesh.triangle_capacity
     heap = r.hkey.shape[0]
-    if heap < queue_used(r) + need:  # stale and served entries first
-        queue_compact(r, ms.mesh)
     if heap < queue_used(r) + need or heap < slots + 16:
         heap = max(2 * heap, slots + 16)
         for name in ("hkey", "hseq", "htri", "hstamp"):

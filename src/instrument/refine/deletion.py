@@ -15,6 +15,7 @@ import cython
 from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, V_DEAD, V_FREE, Index, Mesh, bond, kill_triangle, lnext, lprev, new_triangle, spare_triangles
 from cython.cimports.instrument.core.navigate import find_edge, remember_corners
 from cython.cimports.instrument.core.predicates import incircle
+from cython.cimports.instrument.core.status import DONE, FAILED, NEED_ROOM
 from cython.cimports.instrument.core.subsegments import Subsegments
 from cython.cimports.instrument.counters import C_CREATED, C_DELETED, C_DELETED_VERTEX, C_INCIRCLE
 from cython.cimports.instrument.refine.cavity import inherit, inherited
@@ -92,12 +93,14 @@ def _fill_polygon(
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
-def delete_free_vertex(r: Refiner, m: Mesh, segs: Subsegments, e0: Index) -> cython.bint:
+def delete_free_vertex(r: Refiner, m: Mesh, segs: Subsegments, e0: Index) -> cython.int:
     """Remove the free vertex ``v`` at the origin of edge ``e0`` (Chew's
     rule: ``v`` sits in the diametral circle of the subsegment opposite it
     in ``e0``'s triangle) and re-triangulate its star from that subsegment
-    as the base, as Triangle does.  Returns False (nothing changed) if
-    ``v`` is on the boundary or the scratch space is short.
+    as the base, as Triangle does.  Returns DONE, FAILED (nothing changed:
+    ``v`` is on the boundary, or its star is degenerate) or NEED_ROOM
+    (nothing changed: the scratch space, the mesh or the queue is short;
+    ``r.need`` says how much).
 
     Area bounds and attributes (found by experiment, see
     reconstruct/__init__.py): Triangle's deletion flips move the triangles'
@@ -119,7 +122,8 @@ def delete_free_vertex(r: Refiner, m: Mesh, segs: Subsegments, e0: Index) -> cyt
     nxt: Index
     for _ in range(m.stamp.shape[0]):
         if d + 2 >= w.shape[0] // 4:
-            return False
+            r.need = max(r.need, 4 * (d + 2))
+            return NEED_ROOM
         t = e // 3
         w[d] = m.corner[lprev(e)]
         outer[d] = m.twin[lnext(e)]  # edge dest -> apex, opposite v
@@ -129,12 +133,15 @@ def delete_free_vertex(r: Refiner, m: Mesh, segs: Subsegments, e0: Index) -> cyt
         d += 1
         nxt = m.twin[lprev(e)]
         if nxt == NO_EDGE:
-            return False
+            return FAILED
         e = nxt
         if e == e0:
             break
-    if d < 3 or spare_triangles(m) < d or queue_used(r) + d + 2 > r.hkey.shape[0]:
-        return False
+    if d < 3:
+        return FAILED
+    if spare_triangles(m) < d or queue_used(r) + d + 2 > r.hkey.shape[0]:
+        r.need = max(r.need, d + 2)
+        return NEED_ROOM
     # the polygon w0 .. w[d-1]; base w0 -> w1, chain w0, w[d-1], ..., w1
     half: Index = w.shape[0] // 2
     chain: cython.longlong[:] = w[half:]
@@ -215,7 +222,7 @@ def delete_free_vertex(r: Refiner, m: Mesh, segs: Subsegments, e0: Index) -> cyt
     if r.cfg.keep_segments == 0:
         for i in range(made):
             test_triangle(r, m, segs, r.fan[i])
-    return True
+    return DONE
 
 
 @cython.cfunc
@@ -257,6 +264,7 @@ def chew_delete(r: Refiner, m: Mesh, segs: Subsegments, e: Index) -> cython.bint
     d: Index
     a: Index
     dot: cython.double
+    status: cython.int
     for side in range(2):
         if side == 0:
             f = e
@@ -277,7 +285,10 @@ def chew_delete(r: Refiner, m: Mesh, segs: Subsegments, e: Index) -> cython.bint
                 break
             if queue_used(r) + 64 > r.hkey.shape[0]:
                 return False
-            if not delete_free_vertex(r, m, segs, lprev(f)):  # the edge a -> o
+            status = delete_free_vertex(r, m, segs, lprev(f))  # the edge a -> o
+            if status == NEED_ROOM:
+                return False
+            if status != DONE:  # kept: on the boundary
                 break
             f = find_edge(m, o, d)  # the same side again
             if f < 0:

@@ -53,7 +53,7 @@ from cython.cimports.instrument.refine.criteria import steiner_point, test_fan, 
 from cython.cimports.instrument.refine.deletion import chew_delete
 from cython.cimports.instrument.refine.encroach import check_subsegment, enc_edge, enc_free, enc_push, in_lens, may_split, queue_side
 from cython.cimports.instrument.refine.queues import queue_clear, queue_compact, queue_pop, queue_push, queue_used
-from cython.cimports.instrument.refine.state import T_CIRCUMCENTER, T_OFFCENTER, T_REJECTED, T_SEGMENT, Refiner, trace_full, trace_row
+from cython.cimports.instrument.refine.state import T_CIRCUMCENTER, T_OFFCENTER, T_REJECTED, T_SEGMENT, Refiner, step_begins, step_undone, trace_full, trace_row
 from cython.cimports.libc.math import fabs, sqrt
 
 #: bad triangles taken between two PAUSEs
@@ -117,6 +117,7 @@ def _split_at_apex(r: Refiner, m: Mesh, segs: Subsegments, e: Index, f: Index, t
         return PRECISION
     if segs.count >= segs.marker.shape[0] or queue_used(r) + 4 > r.hkey.shape[0] or r.enc_live + 4 > r.enc.shape[0]:
         r.need = max(r.need, 4)
+        step_undone(r, m.work)
         return NEED_ROOM
     rec: Index = m.seg[e]
     half: Index = new_record(segs, segs.marker[rec], segs.source[rec], segs.ends[rec, 0], segs.ends[rec, 1])
@@ -178,6 +179,7 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
     """Split subsegment edge ``e`` at its midpoint or on a power-of-two shell
     around an end shared with another segment.  Returns DONE, NEED_ROOM
     (nothing changed) or PRECISION."""
+    step_begins(r, m.work)
     xy = m.xy
     o: Index = m.corner[lnext(e)]
     d: Index = m.corner[lprev(e)]
@@ -238,6 +240,7 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
     n, nb = collect_cavity(r, m, px, py, e // 3, t1, e)
     if not has_room(r, m, nb) or segs.count >= segs.marker.shape[0]:
         forget_cavity(r, m, n)
+        step_undone(r, m.work)
         return NEED_ROOM
     order_rim(r, m, nb, d)  # Triangle circles the new vertex from e's destination
     rec: Index = m.seg[e]
@@ -320,6 +323,7 @@ def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cyth
     """Insert the off-center or circumcenter of handle ``h``'s triangle
     unless it is across a subsegment or encroaches one (then the subsegment
     is pooled).  Returns DONE or NEED_ROOM (nothing changed)."""
+    step_begins(r, m.work)
     xy = m.xy
     t: Index = h // 3
     px: cython.double
@@ -352,6 +356,7 @@ def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cyth
     if status == LOC_BLOCKED or (status == LOC_ON_EDGE and m.seg[e] != NO_SEG):
         if m.seg[e] != NO_SEG and may_split(r, m, e):
             if r.enc_live + 1 > r.enc.shape[0]:
+                step_undone(r, m.work)
                 return NEED_ROOM
             enc_push(r, m, e)
         m.work[C_REJECTED] += 1
@@ -369,6 +374,7 @@ def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cyth
     n, nb = collect_cavity(r, m, px, py, start, second, -1)
     if not has_room(r, m, nb):
         forget_cavity(r, m, n)
+        step_undone(r, m.work)
         return NEED_ROOM
     # Triangle's flips circle the new vertex from the located edge's origin
     # (its destination when the point is on it)
@@ -456,9 +462,11 @@ def refine(r: Refiner, m: Mesh, segs: Subsegments) -> cython.int:
                 return status
         if r.hsize == 0 or r.budget == 0:
             return DONE
-        # compact when stale entries outnumber live triangles, or before the queue must grow
+        # compact when stale entries outnumber live triangles (never because
+        # the queue is full: that would make the counts and the trace depend
+        # on how much room it started with; a full queue grows instead)
         live = m.nlive
-        if queue_used(r) > max(r.compact_at, min(2 * live + 4096, r.hkey.shape[0] - 1024)):
+        if queue_used(r) > max(r.compact_at, 2 * live + 4096):
             queue_compact(r, m)
             r.compact_at = 2 * queue_used(r) + 4096  # amortised: never twice in a row
         if r.taken >= PAUSE_EVERY:

@@ -34,6 +34,7 @@ cdef class Refiner:
     cdef public Index need           # with NEED_ROOM: the triangles (and queue entries) one step needs
     cdef public Index error_org      # with PRECISION: the subsegment's end vertices
     cdef public Index error_dest
+    cdef public long long[::1] work_begun  # the work counters as the current step began (step_begins)
     # the bad-triangle queue: a heap, or Triangle's buckets (queues.py)
     cdef public double[::1] hkey     # key (smaller first)
     cdef public long long[::1] hseq  # insertion number (ties); in the bucket log: the next entry
@@ -62,5 +63,7 @@ cdef class Refiner:
     cdef public long long[:, ::1] trace  # rows: kind, created, deleted, walk steps, queue length
     cdef public Index ntrace
 
+cpdef void step_begins(Refiner r, long long[::1] work) noexcept nogil
+cpdef void step_undone(Refiner r, long long[::1] work) noexcept nogil
 cpdef bint trace_full(Refiner r) noexcept nogil
 cpdef void trace_row(Refiner r, long long kind, long long created, long long deleted, long long steps, long long queue) noexcept nogil

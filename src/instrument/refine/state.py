@@ -18,6 +18,7 @@ import numpy as np
 import cython
 from cython.cimports.instrument.core.mesh import Index
 
+from ..counters import NAMES
 from .order import TRIANGLE
 
 #: Triangle's bucket queue has this many FIFO lists.
@@ -66,6 +67,7 @@ class Refiner:
         self.need = 0
         self.error_org = -1
         self.error_dest = -1
+        self.work_begun = np.zeros(len(NAMES), dtype=np.int64)
         self.hkey = np.zeros(queue)
         self.hseq = np.zeros(queue, dtype=np.int64)
         self.htri = np.zeros(queue, dtype=np.int64)
@@ -96,6 +98,26 @@ class Refiner:
 
     def queue_capacity(self) -> int:
         return self.hkey.shape[0]
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def step_begins(r: Refiner, work: cython.longlong[::1]) -> cython.void:
+    """Remember the work counters as a step (a split) begins."""
+    for i in range(work.shape[0]):
+        r.work_begun[i] = work[i]
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def step_undone(r: Refiner, work: cython.longlong[::1]) -> cython.void:
+    """A step that returns NEED_ROOM changed nothing and runs again once the
+    arrays have grown: put its tests back out of the counters, so that the
+    counts do not depend on how much room the arrays started with."""
+    for i in range(work.shape[0]):
+        work[i] = r.work_begun[i]
 
 
 @cython.ccall

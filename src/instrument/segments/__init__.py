@@ -49,6 +49,7 @@ def clean_segments(segments: np.ndarray, xy: np.ndarray, dup: np.ndarray, warnin
 def recover_segments(ms: MeshState, rows: np.ndarray, seg_markers: np.ndarray) -> None:
     """Insert the segments ``rows`` (from ``clean_segments``) in input order."""
     m = ms.mesh
+    m.add_constraint_tables()
     if rows.shape[0] == 0 or m.nslot == 0:
         return
     rows, in_marker = merge_duplicates(rows, np.asarray(seg_markers, dtype=np.int32))
@@ -108,5 +109,6 @@ def merge_duplicates(rows: np.ndarray, markers: np.ndarray) -> tuple[np.ndarray,
 
 def enclose_hull(ms: MeshState) -> None:
     """-c: every hull edge becomes a subsegment with marker 1."""
+    ms.mesh.add_constraint_tables()
     while not mark_hull(ms.mesh, ms.segs, -1):
         ms.grow(records=ms.segs.capacity)
