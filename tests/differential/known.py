@@ -68,14 +68,11 @@ DEFECTS = [
         lambda c, f: f.signature == "ours-exception:ZeroDivisionError" and not tiny(c) and read_switches(c.switches).q,
     ),
     Defect(
-        "huge-segment-recovery",
-        "segments of inputs at ~2^512 are not recovered (RuntimeError 'could not recover segment') where Triangle meshes",
-        lambda c, f: f.kind == "ours-error-where-triangle-meshes" and huge(c),
-    ),
-    Defect(
-        "huge-dropped-vertex",
-        "at ~2^512 ours silently drops an input vertex inside the domain (the unit square's centre under p)",
-        lambda c, f: f.kind == "dropped-vertex" and huge(c),
+        "huge-coordinates",
+        "at ~2^512 ours' geometry breaks: segments are not recovered (RuntimeError where Triangle meshes), or are "
+        "bent through a vertex off them (the unit square's centre under p: half the square silently lost)",
+        lambda c, f: huge(c) and f.kind in ("ours-error-where-triangle-meshes", "phantom-segment", "dropped-vertex",
+                                           "boundary-not-segment", "area-total"),
     ),
     Defect(
         "regions-heap",

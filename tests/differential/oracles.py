@@ -8,19 +8,25 @@ applied).  The rules:
 * ours never crashes, hangs, or raises anything but ``ValueError`` /
   ``RuntimeError`` (and their engine subclasses ``SwitchError``,
   ``PrecisionError``) with a message; and it raises those only where
-  Triangle makes no valid mesh either;
+  Triangle makes no valid mesh either (at extreme scales, where Triangle's
+  own predicates under- or overflow, an empty answer of Triangle's counts
+  as no mesh);
 * every mesh of ours passes ``check_mesh`` (with the input as PSLG under
-  ``p``, the fixed area bound, and the angle bound where Triangle meets it);
+  ``p``; the fixed area bound and the angle bound where Triangle's own mesh
+  meets them: ``Y``/``YY`` can make both unreachable), loses no input vertex
+  that lies in the mesh, has only segments as boundary edges under ``p`` or
+  ``c`` (Triangle eats up to segments), and under ``p`` without ``c`` only
+  subsegments that lie on input segments;
 * where Triangle made a mesh that passes the same checker:
   - non-refining switches (no q, a, u, D): equal counts (vertices,
-    triangles, segments, edges), marker multisets, input-vertex markers,
-    area per triangle attribute, total area, ``o2`` node counts;
+    triangles, segments, edges, neighbours), marker multisets, input-vertex
+    markers, area per triangle attribute, total area, ``o2`` node counts;
   - refining switches: ours uses no more vertices than Triangle's count
     plus 2 % or 3, or, failing that, than Triangle's largest count over the
     exact re-expressions of the input plus 1 % or 2 (Triangle's own count
-    moves that much when the input is mirrored); the angle bound where
-    Triangle meets it; regional and per-triangle (``r``) area bounds where
-    Triangle meets them; attributes per region; the same total area.
+    moves that much when the input is mirrored); regional and per-triangle
+    (``r``) area bounds where Triangle meets them; attributes per region;
+    the same total area.  Under ``S`` (a Steiner budget) only the size.
 
 Switches are read here with a small parser of our own, not the engine's.
 """
@@ -212,6 +218,38 @@ def unsegmented_boundary(result: dict) -> int:
     segs = _arr(result, "segments", 2).astype(np.int64)
     seg_keys = np.minimum(segs[:, 0], segs[:, 1]) * nv + np.maximum(segs[:, 0], segs[:, 1]) if len(segs) else np.zeros(0)
     return int((~np.isin(boundary, seg_keys)).sum())
+
+
+def phantom_segments(result: dict, tri: dict, rtol: float = 1e-9) -> list[int]:
+    """Output subsegments that lie on no input segment (under ``p`` without
+    ``c``, every subsegment is a piece of an input segment).  Coordinates
+    are scaled by a power of two first, so inputs at 2^512 do not overflow;
+    split points may sit an ulp or so off their segment, hence ``rtol``."""
+    segs = _arr(result, "segments", 2).astype(np.int64)
+    ins = np.asarray(tri.get("segments", np.zeros((0, 2))), dtype=np.int64).reshape(-1, 2)
+    if not len(segs):
+        return []
+    iv, ov = _vertices(tri), _vertices(result)
+    big = max(float(np.abs(iv).max(initial=0.0)), float(np.abs(ov).max(initial=0.0)))
+    if not math.isfinite(big) or big == 0:
+        return []
+    k = -math.frexp(big)[1]
+    iv, ov = np.ldexp(iv, k), np.ldexp(ov, k)
+    if not len(ins):
+        return list(range(len(segs)))
+    a, b = iv[ins[:, 0]][None], iv[ins[:, 1]][None]  # (1, S, 2)
+    d = b - a
+    length = np.hypot(d[..., 0], d[..., 1])
+    ok = np.ones(len(segs), dtype=bool)
+    for end in (0, 1):
+        p = ov[segs[:, end]][:, None]  # (M, 1, 2)
+        cross = d[..., 0] * (p[..., 1] - a[..., 1]) - d[..., 1] * (p[..., 0] - a[..., 0])
+        t = (d[..., 0] * (p[..., 0] - a[..., 0]) + d[..., 1] * (p[..., 1] - a[..., 1])) / np.maximum(length**2, 1e-300)
+        on = (np.abs(cross) <= rtol * np.maximum(length, 1e-300) + 1e-300) & (t >= -rtol) & (t <= 1 + rtol)
+        ok_end = on if end == 0 else on & ok_pair
+        ok_pair = on
+    ok = ok_end.any(axis=1)
+    return np.flatnonzero(~ok).tolist()
 
 
 def _containing(result: dict, xy) -> np.ndarray:
@@ -413,6 +451,9 @@ def _judge(case: Case, tri: Outcome, ours: Outcome, spread) -> Verdict:
         v.fail("invalid-mesh", _problem_kind(probs[0]), "; ".join(probs[:4]))
     if lost := dropped_vertices(res, case.input):
         v.fail("dropped-vertex", "", f"input vertices {lost[:5]} lie in ours' mesh but are not vertices of it")
+    if sw.p and not sw.c and not sw.r and (phantom := phantom_segments(res, case.input)):
+        v.fail("phantom-segment", "", f"{len(phantom)} output segments of ours lie on no input segment "
+               f"(first: {_arr(res, 'segments', 2)[phantom[0]].tolist()})")
     if (sw.p or sw.c) and not sw.r and (open_edges := unsegmented_boundary(res)):
         v.fail("boundary-not-segment", "", f"{open_edges} boundary edges of ours are not segments "
                "(under p or c, triangles are eaten up to segments)")
