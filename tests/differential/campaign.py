@@ -54,9 +54,12 @@ class Campaign:
         self.harness_errors = 0
         self.shrink_trials = 0
         self.previous = None
+        self.t0 = time.perf_counter()
 
     def one(self, case) -> None:
         self.cases += 1
+        if self.cases % 100 == 0:  # progress, readable while a chunk runs
+            (self.out / "progress.json").write_text(json.dumps(self.summary(time.perf_counter() - self.t0), indent=1) + "\n")
         try:
             run = run_case(self.runners, case, self.previous, self.confirmed)
         except Exception as exc:  # a defect of the harness itself: recorded, generation goes on

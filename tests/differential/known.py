@@ -27,7 +27,8 @@ from .oracles import Failure, read_switches
 class Defect:
     id: str
     description: str
-    matches: Callable[[Case, Failure], bool]
+    #: (case, failure, notes of the verdict) -> whether this defect explains the failure
+    matches: Callable[[Case, Failure, dict], bool]
 
 
 def _coords(case: Case) -> np.ndarray:
@@ -51,47 +52,83 @@ def _kind(f: Failure, *kinds: str) -> bool:
     return f.kind in kinds
 
 
+def has_duplicates(case: Case) -> bool:
+    v = np.asarray(case.input["vertices"], dtype=np.float64)
+    return len(np.unique(v, axis=0)) < len(v)
+
+
+def nearly_collinear(case: Case, rtol: float = 1e-9) -> bool:
+    """Two input segments that share an endpoint and turn by a nonzero angle
+    below ``rtol`` radians (or a vertex that close to, but not on, a segment's line)."""
+    v = np.asarray(case.input["vertices"], dtype=np.float64)
+    segs = np.asarray(case.input.get("segments", np.zeros((0, 2))), dtype=np.int64).reshape(-1, 2)
+    if not len(segs) or not np.isfinite(v).all():
+        return False
+    a, b = v[segs[:, 0]], v[segs[:, 1]]
+    d = b - a
+    length = np.hypot(d[:, 0], d[:, 1])
+    with np.errstate(all="ignore"):
+        cross = d[:, None, 0] * (v[None, :, 1] - a[:, None, 1]) - d[:, None, 1] * (v[None, :, 0] - a[:, None, 0])
+        dist = np.abs(cross) / length[:, None]
+        near = (dist > 0) & (dist < rtol * length[:, None])
+    return bool(near.any())
+
+
+def triangle_empty(notes: dict) -> bool:
+    return ", 0 triangles" in str(notes.get("triangle", ""))
+
+
 DEFECTS = [
     Defect(
         "o2-ignored",
         "o2 is ignored: ours returns 3-node triangles and no midpoint nodes",
-        lambda c, f: _kind(f, "o2"),
+        lambda c, f, n: _kind(f, "o2"),
     ),
     Defect(
         "zero-division-tiny",
         "ZeroDivisionError in refinement when coordinates are tiny (below ~2^-200, e.g. the unit square * 2^-269 under pq30)",
-        lambda c, f: f.signature == "ours-exception:ZeroDivisionError" and tiny(c),
+        lambda c, f, n: f.signature == "ours-exception:ZeroDivisionError" and tiny(c),
     ),
     Defect(
         "zero-division-star",
-        "ZeroDivisionError in refinement of self-intersecting stars at ordinary scale (19-point star, step 6, under pq30)",
-        lambda c, f: f.signature == "ours-exception:ZeroDivisionError" and not tiny(c) and read_switches(c.switches).q,
+        "ZeroDivisionError in refinement at ordinary scale (the 19-point star, step 6, under pq30)",
+        lambda c, f, n: f.signature == "ours-exception:ZeroDivisionError" and not tiny(c) and read_switches(c.switches).q,
     ),
     Defect(
         "huge-coordinates",
         "at ~2^512 ours' geometry breaks: segments are not recovered (RuntimeError where Triangle meshes), or are "
         "bent through a vertex off them (the unit square's centre under p: half the square silently lost)",
-        lambda c, f: huge(c) and f.kind in ("ours-error-where-triangle-meshes", "phantom-segment", "dropped-vertex",
-                                           "boundary-not-segment", "area-total"),
+        lambda c, f, n: huge(c) and f.kind in ("ours-error-where-triangle-meshes", "phantom-segment", "dropped-vertex",
+                                              "boundary-not-segment", "area-total", "invalid-mesh"),
     ),
     Defect(
         "regions-heap",
         "regions with A and an area bound corrupt the heap (a crash, at exit or in a later call)",
-        lambda c, f: f.kind == "ours-crash" and "regions" in c.input,
+        lambda c, f, n: f.kind == "ours-crash" and "regions" in c.input,
     ),
     Defect(
         "collinear-chain-p",
-        "nearly collinear segment chains fail under p ('could not recover segment') where Triangle meshes",
-        lambda c, f: f.kind == "ours-error-where-triangle-meshes" and "could not recover segment" in f.message and not huge(c),
+        "nearly collinear segment chains under p: RuntimeError 'could not recover segment' where Triangle meshes, or "
+        "segments bent through nearby vertices (phantom segments, uneaten triangles)",
+        lambda c, f, n: not huge(c) and nearly_collinear(c) and f.kind in (
+            "ours-error-where-triangle-meshes", "phantom-segment", "invalid-mesh", "boundary-not-segment",
+            "area-total", "count", "markers", "dropped-vertex"),
+    ),
+    Defect(
+        "duplicate-markers",
+        "a duplicate vertex gets its twin's boundary marker (1); Triangle leaves duplicates at 0 (and on inputs "
+        "without triangles, j keeps duplicates that Triangle jettisons)",
+        lambda c, f, n: has_duplicates(c) and f.kind in ("markers", "count") and f.detail in (
+            "input-vertex", "vertex_markers", "vertices"),
     ),
 ]
 
 BY_ID = {d.id: d for d in DEFECTS}
 
 
-def explaining(case: Case, failure: Failure) -> Defect | None:
+def explaining(case: Case, failure: Failure, notes: dict | None = None) -> Defect | None:
     """The open defect that explains ``failure`` on ``case``, if any."""
     for d in DEFECTS:
-        if d.matches(case, failure):
+        if d.matches(case, failure, notes or {}):
             return d
     return None
