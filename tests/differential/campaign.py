@@ -55,13 +55,14 @@ class Campaign:
         self.shrink_trials = 0
         self.previous = None
         self.t0 = time.perf_counter()
+        self.confirmations = 1
 
     def one(self, case) -> None:
         self.cases += 1
         if self.cases % 100 == 0:  # progress, readable while a chunk runs
             (self.out / "progress.json").write_text(json.dumps(self.summary(time.perf_counter() - self.t0), indent=1) + "\n")
         try:
-            run = run_case(self.runners, case, self.previous, self.confirmed)
+            run = run_case(self.runners, case, self.previous, self.confirmed, self.confirmations)
         except Exception as exc:  # a defect of the harness itself: recorded, generation goes on
             self.harness_errors += 1
             self._note(f"harness-error:{type(exc).__name__}", case.family, case, {"error": repr(exc)})
@@ -155,11 +156,14 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--chunk", type=int, default=500, help="cases per Hypothesis run")
     ap.add_argument("--out", type=Path, default=Path("differential-campaign"))
     ap.add_argument("--shrink-budget", type=float, default=SHRINK_BUDGET, help="seconds of shrinking per signature")
+    ap.add_argument("--confirmations", type=int, default=1,
+                    help="fresh-process confirmations per failure signature (crashes are always confirmed)")
     ap.add_argument("--ours-timeout", type=float, default=20.0, help="seconds before ours counts as hung")
     args = ap.parse_args(argv)
     args.out.mkdir(parents=True, exist_ok=True)
     runners = Runners(ours_timeout=args.ours_timeout)
     camp = Campaign(args.out, runners, args.shrink_budget)
+    camp.confirmations = args.confirmations
     t0 = time.perf_counter()
     chunk = 0
     try:

@@ -48,7 +48,8 @@ def judge_outcomes(runners: Runners, case: Case, tri: Outcome, ours: Outcome) ->
     return judge(case, tri, ours, spread=lambda: spread_counts(runners, case))
 
 
-def run_case(runners: Runners, case: Case, previous: Case | None = None, confirmed: dict | None = None) -> Run | None:
+def run_case(runners: Runners, case: Case, previous: Case | None = None, confirmed: dict | None = None,
+             confirmations: int = CONFIRMATIONS) -> Run | None:
     """Run ``case``; None when it cannot be made (Triangle makes no mesh to refine).
     ``confirmed`` counts the fresh confirmations per signature so far."""
     case = runners.materialize(case)
@@ -61,7 +62,7 @@ def run_case(runners: Runners, case: Case, previous: Case | None = None, confirm
     if verdict.ok:
         return run
     if confirmed is not None and ours.status != "crash":
-        if all(confirmed.get(sig, 0) >= CONFIRMATIONS for sig in verdict.signatures()):
+        if all(confirmed.get(sig, 0) >= confirmations for sig in verdict.signatures()):
             return run
     fresh = runners.run_ours_fresh(case.input, case.switches)
     fresh_verdict = judge_outcomes(runners, case, tri, fresh)

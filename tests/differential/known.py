@@ -74,6 +74,22 @@ def nearly_collinear(case: Case, rtol: float = 1e-9) -> bool:
     return bool(near.any())
 
 
+def hole_on_segment(case: Case) -> bool:
+    """A hole point exactly on an input segment (its endpoints included)."""
+    from instrument.check import orient_exact
+
+    holes = np.asarray(case.input.get("holes", np.zeros((0, 2))), dtype=np.float64).reshape(-1, 2)
+    v = np.asarray(case.input["vertices"], dtype=np.float64)
+    segs = np.asarray(case.input.get("segments", np.zeros((0, 2))), dtype=np.int64).reshape(-1, 2)
+    for h in holes.tolist():
+        for a, b in segs.tolist():
+            pa, pb = v[a].tolist(), v[b].tolist()
+            inside = min(pa[0], pb[0]) <= h[0] <= max(pa[0], pb[0]) and min(pa[1], pb[1]) <= h[1] <= max(pa[1], pb[1])
+            if inside and orient_exact(pa, pb, h) == 0:
+                return True
+    return False
+
+
 def triangle_empty(notes: dict) -> bool:
     return ", 0 triangles" in str(notes.get("triangle", ""))
 
@@ -120,6 +136,34 @@ DEFECTS = [
         "without triangles, j keeps duplicates that Triangle jettisons)",
         lambda c, f, n: has_duplicates(c) and f.kind in ("markers", "count") and f.detail in (
             "input-vertex", "vertex_markers", "vertices"),
+    ),
+]
+
+DEFECTS += [
+    Defect(
+        "hole-on-segment",
+        "a hole point exactly on a segment (or a vertex) makes ours eat both sides, often the whole domain; "
+        "Triangle eats one side",
+        lambda c, f, n: hole_on_segment(c) and f.kind in ("count", "area-total", "markers", "size", "region-area",
+                                                          "region-attribute", "attributes"),
+    ),
+    Defect(
+        "inverted-triangles",
+        "ours returns clockwise or zero-area triangles (hole points on segments or vertices with c and an area "
+        "bound; nearly collinear chains under pa where Triangle fails)",
+        lambda c, f, n: f.kind == "invalid-mesh" and ("clockwise" in f.message or "zero area" in f.message),
+    ),
+    Defect(
+        "hang",
+        "ours hangs (no answer within the timeout) on slivers under D or q, and on point sets at extreme "
+        "scales under q34, where Triangle also hangs or crashes",
+        lambda c, f, n: f.kind == "ours-timeout",
+    ),
+    Defect(
+        "steiner-budget",
+        "S[n]: segment-intersection vertices do not use up ours' Steiner budget (in Triangle they do), so ours "
+        "adds up to n more vertices (11-point star, step 3, pa0.00485S12: Triangle 33 vertices, ours 45)",
+        lambda c, f, n: f.kind == "size" and read_switches(c.switches).S is not None,
     ),
 ]
 
