@@ -119,8 +119,8 @@ class Campaign:
             case, entry = self.first[sig]
             if not sig.startswith("harness-error"):
 
-                def fails(c, sig=sig):
-                    run = run_case(self.runners, c)
+                def fails(c, sig=sig):  # no fresh-process confirmation (but for crashes): seconds each
+                    run = run_case(self.runners, c, confirmed={}, confirmations=0)
                     return run is not None and sig in run.verdict.signatures()
 
                 case, trials = shrink(case, fails, self.shrink_budget)

@@ -26,7 +26,7 @@ from .cases import read_case, write_case
 from .families import cases
 from .harness import run_case
 
-DEFAULT_EXAMPLES = 40
+DEFAULT_EXAMPLES = 30
 EXAMPLES = int(os.environ.get("RUPPERT_DIFF_EXAMPLES", DEFAULT_EXAMPLES))
 SEED = int(os.environ.get("RUPPERT_DIFF_SEED", "0"))
 REGRESSIONS = sorted((Path(__file__).parent / "regressions").glob("*.json"))
