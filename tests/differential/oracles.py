@@ -409,8 +409,13 @@ def _judge(case: Case, tri: Outcome, ours: Outcome, spread) -> Verdict:
 
     # is Triangle's answer a valid mesh? (then ours must make one too)
     t_ok = tri.status == "ok"
+    # with r the given triangles come back as they are (and refinement only
+    # flips around new vertices): Delaunay is asked of ours where Triangle's is
+    delaunay = not sw.r
     if t_ok:
-        t_probs = check_mesh(tri.result, pslg=pslg if "segments" in tri.result else None)
+        t_probs = check_mesh(tri.result, pslg=pslg if "segments" in tri.result else None, delaunay=delaunay)
+        if sw.r and not t_probs:
+            delaunay = not check_mesh(tri.result, pslg=pslg if "segments" in tri.result else None, markers=False)
         if t_probs:
             v.notes["triangle_invalid"] = t_probs[:3]
             t_ok = False
@@ -453,7 +458,8 @@ def _judge(case: Case, tri: Outcome, ours: Outcome, spread) -> Verdict:
             if not meets:
                 max_area = None
     try:
-        probs = check_mesh(res, pslg=pslg if "segments" in res else None, min_angle=angle, max_area=max_area)
+        probs = check_mesh(res, pslg=pslg if "segments" in res else None, min_angle=angle, max_area=max_area,
+                           delaunay=delaunay)
     except Exception as exc:  # the checker itself must cope with whatever it is given
         v.fail("checker-error", type(exc).__name__, f"check_mesh raised {type(exc).__name__}: {exc}")
         return v
@@ -531,22 +537,28 @@ def _equal_counts(v: Verdict, case: Case, sw: Switches, t_res: dict, res: dict) 
             continue
         if n_rows(t_res, key) != n_rows(res, key):
             v.fail("count", key, f"{key}: Triangle {n_rows(t_res, key)}, ours {n_rows(res, key)}")
-    for key in ("vertex_markers", "segment_markers", "edge_markers"):
-        if key == "vertex_markers" and o2_differs:
-            continue
-        tm = Counter(_arr(t_res, key, 1).reshape(-1).tolist())
-        om = Counter(_arr(res, key, 1).reshape(-1).tolist())
-        if tm != om:
-            v.fail("markers", key, f"{key} multiset: Triangle {dict(tm)}, ours {dict(om)}")
     n_in = len(case.input["vertices"])
+    outside_only = False
     if not sw.j and n_rows(t_res, "vertex_markers") >= n_in and n_rows(res, "vertex_markers") >= n_in:
         tm = _arr(t_res, "vertex_markers", 1)[:n_in, 0]
         om = _arr(res, "vertex_markers", 1)[:n_in, 0]
         diff = np.flatnonzero(tm != om)
         if len(diff):
+            used = np.zeros(max(n_rows(t_res, "vertices"), n_in), dtype=bool)
+            used[_arr(t_res, "triangles", 3)[:, :3].astype(np.int64).ravel()] = True
+            outside_only = not used[diff].any()
             i = int(diff[0])
-            v.fail("markers", "input-vertex", f"input vertex {i}: Triangle's marker {tm[i]}, ours {om[i]} "
+            # a vertex in no triangle of Triangle's (eaten, outside the domain, or no triangle at all)
+            detail = "outside-domain" if outside_only else "input-vertex"
+            v.fail("markers", detail, f"input vertex {i}: Triangle's marker {tm[i]}, ours {om[i]} "
                    f"({len(diff)} input vertices differ)")
+    for key in ("vertex_markers", "segment_markers", "edge_markers"):
+        if key == "vertex_markers" and (o2_differs or outside_only):
+            continue
+        tm = Counter(_arr(t_res, key, 1).reshape(-1).tolist())
+        om = Counter(_arr(res, key, 1).reshape(-1).tolist())
+        if tm != om:
+            v.fail("markers", key, f"{key} multiset: Triangle {dict(tm)}, ours {dict(om)}")
 
 
 def _refining(v: Verdict, case: Case, sw: Switches, pslg, t_res: dict, res: dict, spread) -> None:
