@@ -173,6 +173,14 @@ def _tri_areas(result: dict) -> np.ndarray:
         return 0.5 * ((b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0]))
 
 
+def _total_area(result: dict) -> float:
+    """The mesh's area; inf when the sum overflows (math.fsum raises on that at ~2^512)."""
+    try:
+        return mesh_area({"vertices": _vertices(result), "triangles": _arr(result, "triangles", 3)[:, :3]})
+    except OverflowError:
+        return math.inf
+
+
 def _close(x: float, y: float, scale: float, slack: float = 0.0) -> bool:
     return abs(x - y) <= AREA_RTOL * max(abs(scale), 1e-300) + slack or (math.isinf(x) and x == y)
 
@@ -387,7 +395,11 @@ def dropped_vertices(result: dict, tri: dict) -> list[int]:
 
 
 def triangle_meets_angle(result: dict, pslg, angle: float) -> bool:
-    rep = quality_report(result, pslg, angle)
+    try:
+        rep = quality_report(result, pslg, angle)
+    except OverflowError:  # quality_report's area sum overflows at ~2^512: ask check_mesh instead
+        probs = check_mesh(result, pslg, min_angle=angle, delaunay=False, markers=False)
+        return not any("minimum angle" in p for p in probs)
     return rep["n_bad"] - rep["n_exempt"] == 0
 
 
@@ -484,8 +496,8 @@ def _judge(case: Case, tri: Outcome, ours: Outcome, spread) -> Verdict:
             v.fail("o2", "", f"o2: Triangle gives {t_cols}-node triangles ({n_rows(t_res, 'vertices')} nodes), "
                    f"ours {o_cols}-node ({n_rows(res, 'vertices')} nodes)")
 
-    scale = mesh_area({"vertices": _vertices(t_res), "triangles": _arr(t_res, "triangles", 3)[:, :3]})
-    t_area, o_area = scale, mesh_area({"vertices": _vertices(res), "triangles": _arr(res, "triangles", 3)[:, :3]})
+    scale = t_area = _total_area(t_res)
+    o_area = _total_area(res)
     finite = math.isfinite(t_area) and math.isfinite(o_area)  # areas of ~1e300 meshes overflow
     slack = rounding_slack(t_res, res) if finite else 0.0
     if finite and not _close(t_area, o_area, scale, slack):
