@@ -119,8 +119,9 @@ DEFECTS = [
     ),
     Defect(
         "regions-heap",
-        "regions with A and an area bound corrupt the heap (a crash, at exit or in a later call)",
-        lambda c, f, n: f.kind == "ours-crash" and "regions" in c.input,
+        "regions with an area bound (a) return wrong triangle attributes and corrupt the heap (a crash at exit "
+        "or in a later call; pAa0.01 on the unit square with regions [[.5, .5, 7, 0]])",
+        lambda c, f, n: "regions" in c.input and f.kind in ("ours-crash", "attributes", "region-attribute", "region-area"),
     ),
     Defect(
         "collinear-chain-p",
