@@ -30,6 +30,7 @@ sys.path.insert(0, str(ROOT))
 import triangle  # noqa: E402
 
 import ruppert_io  # noqa: E402
+from tests.differential.reexpress import KINDS, transformed  # noqa: E402
 
 DEFAULT_CORPUS = ROOT.parent / "shared" / "corpus"
 TRANSFORMS = ("mirror", "swap-xy", "reverse-segments")
@@ -42,27 +43,11 @@ def default_inputs(corpus: Path) -> list[Path]:
     return samples + extra
 
 
-def transformed(tri: dict, kind: str) -> dict:
-    """The same PSLG, re-expressed exactly."""
-    out = {k: np.array(v, copy=True) for k, v in tri.items()}
-    for key in ("vertices", "holes", "regions"):
-        if key in out:
-            if kind == "mirror":
-                out[key][:, 0] *= -1.0
-            elif kind == "swap-xy":
-                out[key][:, [0, 1]] = out[key][:, [1, 0]]
-    if kind == "reverse-segments" and "segments" in out:
-        out["segments"] = out["segments"][::-1].copy()
-        if "segment_markers" in out:
-            out["segment_markers"] = out["segment_markers"][::-1].copy()
-    return out
-
-
 def off(n: int, ref: int) -> bool:
     return abs(n - ref) > max(3, 0.02 * ref)
 
 
-def spread(path: Path, switches: str) -> dict | None:
+def spread(path: Path, switches: str, kinds=TRANSFORMS) -> dict | None:
     """Vertex counts of Triangle's meshes of ``path`` and its re-expressions,
     or None if Triangle makes no mesh of it."""
     try:
@@ -74,24 +59,24 @@ def spread(path: Path, switches: str) -> dict | None:
     if "triangles" not in base:
         return None
     row = {"input": path.name, "switches": opts, "original": len(base["vertices"])}
-    for kind in TRANSFORMS:
+    for kind in kinds:
         row[kind] = len(triangle.triangulate(transformed(tri, kind), opts)["vertices"])
     return row
 
 
-def markdown(rows: list[dict], switches: str) -> str:
+def markdown(rows: list[dict], switches: str, kinds=TRANSFORMS) -> str:
     lines = [
         f"Triangle's vertex count under `{switches}` for each input and its exact re-expressions "
         "(`*`: more than 2% or 3 vertices from the original).",
         "",
-        "| input | original | " + " | ".join(TRANSFORMS) + " |",
-        "|---|---:|" + "---:|" * len(TRANSFORMS),
+        "| input | original | " + " | ".join(kinds) + " |",
+        "|---|---:|" + "---:|" * len(kinds),
     ]
     for r in rows:
-        cells = [f"{r[k]}{'*' if off(r[k], r['original']) else ''}" for k in TRANSFORMS]
+        cells = [f"{r[k]}{'*' if off(r[k], r['original']) else ''}" for k in kinds]
         lines.append(f"| {r['input']} | {r['original']} | " + " | ".join(cells) + " |")
-    counts = {k: sum(off(r[k], r["original"]) for r in rows) for k in TRANSFORMS}
-    changed = sum(any(off(r[k], r["original"]) for k in TRANSFORMS) for r in rows)
+    counts = {k: sum(off(r[k], r["original"]) for r in rows) for k in kinds}
+    changed = sum(any(off(r[k], r["original"]) for k in kinds) for r in rows)
     lines += [
         "",
         f"Inputs off by more than 2%: " + ", ".join(f"{k} {n}" for k, n in counts.items())
@@ -106,9 +91,11 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--switches", default="pq30", help="Triangle switches (default pq30; A is dropped without regions)")
     ap.add_argument("--corpus", type=Path, default=DEFAULT_CORPUS)
     ap.add_argument("--markdown", type=Path, help="also write the table here")
+    ap.add_argument("--all", action="store_true", help=f"every re-expression ({', '.join(KINDS)})")
     args = ap.parse_args(argv)
-    rows = [r for p in (args.inputs or default_inputs(args.corpus)) if (r := spread(p, args.switches))]
-    text = markdown(rows, args.switches)
+    kinds = KINDS if args.all else TRANSFORMS
+    rows = [r for p in (args.inputs or default_inputs(args.corpus)) if (r := spread(p, args.switches, kinds))]
+    text = markdown(rows, args.switches, kinds)
     print(text, end="")
     if args.markdown:
         args.markdown.parent.mkdir(parents=True, exist_ok=True)

@@ -1,0 +1,82 @@
+"""One differential case from start to verdict, shared by the tests and the campaign.
+
+``run_case`` materializes the case (Triangle makes the mesh an ``r`` case
+refines), runs Triangle and ours, and judges.  A failure seen in the
+persistent worker of ours is confirmed in a fresh process, because a case
+that corrupts the worker's heap can make a later, innocent case crash; when
+the persistent worker crashed but the fresh run is fine, the previous case
+is run fresh too, so the crash is charged to the case that caused it.
+A signature confirmed ``CONFIRMATIONS`` times in a session is not
+confirmed again (each fresh process costs seconds of kernel loading).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from .cases import Case
+from .oracles import Verdict, judge, used_vertices
+from .reexpress import KINDS, transformed
+from .runners import Outcome, Runners
+
+
+CONFIRMATIONS = 3
+
+
+@dataclass
+class Run:
+    case: Case  # materialized
+    verdict: Verdict
+    triangle: Outcome
+    ours: Outcome
+    #: (case, verdict) of the previous case when it, not this one, broke the worker
+    culprit: tuple | None = None
+    notes: dict = field(default_factory=dict)
+
+
+def spread_counts(runners: Runners, case: Case) -> list[int]:
+    """Triangle's used-vertex counts over the exact re-expressions of the input."""
+    counts = []
+    for kind in KINDS:
+        out = runners.run_triangle(transformed(case.input, kind), case.switches)
+        if out.status == "ok" and len(out.result.get("triangles", ())):
+            counts.append(used_vertices(out.result))
+    return counts
+
+
+def judge_outcomes(runners: Runners, case: Case, tri: Outcome, ours: Outcome) -> Verdict:
+    return judge(case, tri, ours, spread=lambda: spread_counts(runners, case))
+
+
+def run_case(runners: Runners, case: Case, previous: Case | None = None, confirmed: dict | None = None,
+             confirmations: int = CONFIRMATIONS) -> Run | None:
+    """Run ``case``; None when it cannot be made (Triangle makes no mesh to refine).
+    ``confirmed`` counts the fresh confirmations per signature so far."""
+    case = runners.materialize(case)
+    if case is None:
+        return None
+    tri = runners.run_triangle(case.input, case.switches)
+    ours = runners.run_ours(case.input, case.switches)
+    verdict = judge_outcomes(runners, case, tri, ours)
+    run = Run(case, verdict, tri, ours)
+    if verdict.ok:
+        return run
+    if confirmed is not None and ours.status != "crash":
+        if all(confirmed.get(sig, 0) >= confirmations for sig in verdict.signatures()):
+            return run
+    fresh = runners.run_ours_fresh(case.input, case.switches)
+    fresh_verdict = judge_outcomes(runners, case, tri, fresh)
+    if confirmed is not None:
+        for sig in fresh_verdict.signatures():
+            confirmed[sig] = confirmed.get(sig, 0) + 1
+    if fresh_verdict.ok:
+        run.notes["persistent_worker_only"] = verdict.signatures()
+        if ours.status == "crash" and previous is not None:
+            prev = runners.materialize(previous)
+            if prev is not None:
+                p_tri = runners.run_triangle(prev.input, prev.switches)
+                p_ours = runners.run_ours_fresh(prev.input, prev.switches)
+                p_verdict = judge_outcomes(runners, prev, p_tri, p_ours)
+                if not p_verdict.ok:
+                    run.culprit = (prev, p_verdict, p_tri, p_ours)
+    return Run(case, fresh_verdict, tri, fresh, run.culprit, run.notes)

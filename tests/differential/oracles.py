@@ -1,0 +1,613 @@
+"""What ours must do, given what Triangle did on the same case.
+
+``judge`` returns a ``Verdict``: the failures (each with a ``signature``,
+a short stable cause used to deduplicate, e.g. ``ours-exception:
+ZeroDivisionError``) and notes (what Triangle did, sizes, which oracles
+applied).  The rules:
+
+* ours never crashes, hangs, or raises anything but ``ValueError`` /
+  ``RuntimeError`` (and their engine subclasses ``SwitchError``,
+  ``PrecisionError``) with a message; and it raises those only where
+  Triangle makes no valid mesh either (at extreme scales, where Triangle's
+  own predicates under- or overflow, an empty answer of Triangle's counts
+  as no mesh);
+* every mesh of ours passes ``check_mesh`` (with the input as PSLG under
+  ``p``; the fixed area bound and the angle bound where Triangle's own mesh
+  meets them: ``Y``/``YY`` can make both unreachable), loses no input vertex
+  that lies in the mesh, has only segments as boundary edges under ``p`` or
+  ``c`` (Triangle eats up to segments), and under ``p`` without ``c`` only
+  subsegments that lie on input segments;
+* where Triangle made a mesh that passes the same checker:
+  - non-refining switches (no q, a, u, D): equal counts (vertices,
+    triangles, segments, edges, neighbours), marker multisets, input-vertex
+    markers, area per triangle attribute, total area, ``o2`` node counts;
+  - refining switches: ours uses no more vertices than Triangle's count
+    plus 2 % or 3, or, failing that, than Triangle's largest count over the
+    exact re-expressions of the input plus 1 % or 2 (Triangle's own count
+    moves that much when the input is mirrored); regional and per-triangle
+    (``r``) area bounds where Triangle meets them; attributes per region;
+    the same total area.  Under ``S`` (a Steiner budget) only the size.
+
+Switches are read here with a small parser of our own, not the engine's.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections import Counter, defaultdict
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from instrument.check import check_mesh, mesh_area, orient_signs, quality_report
+
+from .cases import Case
+from .runners import Outcome
+
+#: what the engine may raise on input it cannot mesh (class names; the
+#: engine's SwitchError is a ValueError, its PrecisionError a RuntimeError)
+ALLOWED_ERRORS = frozenset({"ValueError", "SwitchError", "RuntimeError", "PrecisionError"})
+AREA_RTOL = 1e-9
+SIZE_SLACK = (0.02, 3)
+SPREAD_SLACK = (0.01, 2)
+
+
+@dataclass
+class Failure:
+    kind: str
+    detail: str
+    message: str
+
+    @property
+    def signature(self) -> str:
+        return f"{self.kind}:{self.detail}" if self.detail else self.kind
+
+
+@dataclass
+class Verdict:
+    failures: list[Failure] = field(default_factory=list)
+    notes: dict = field(default_factory=dict)
+
+    def fail(self, kind: str, detail: str, message: str) -> None:
+        self.failures.append(Failure(kind, detail, message))
+
+    @property
+    def ok(self) -> bool:
+        return not self.failures
+
+    def signatures(self) -> list[str]:
+        return sorted({f.signature for f in self.failures})
+
+
+@dataclass
+class Switches:
+    """What the oracles need to know of a switch string."""
+
+    p: bool = False
+    r: bool = False
+    q: bool = False
+    angle: float = 0.0
+    area: float | None = None
+    bare_a: bool = False
+    D: bool = False
+    u: bool = False
+    A: bool = False
+    c: bool = False
+    j: bool = False
+    Y: int = 0
+    S: int | None = None
+    o2: bool = False
+
+    @property
+    def refining(self) -> bool:
+        return self.q or self.area is not None or self.bare_a or self.D or self.u
+
+    @property
+    def variable_area(self) -> bool:
+        return self.bare_a and (self.p or self.r)
+
+
+def read_switches(s: str) -> Switches:
+    o = Switches()
+    i = 0
+    while i < len(s):
+        ch = s[i]
+        i += 1
+        num = re.match(r"[0-9.]*", s[i:]).group()
+        if ch == "q":
+            o.q = True
+            o.angle = float(num) if num.strip(".") else 20.0
+            i += len(num)
+        elif ch == "a":
+            if num:
+                o.area = float(num)
+                i += len(num)
+            else:
+                o.bare_a = True
+        elif ch == "S":
+            digits = re.match(r"[0-9]*", s[i:]).group()
+            o.S = int(digits) if digits else 0
+            i += len(digits)
+        elif ch == "o" and s[i : i + 1] == "2":
+            o.o2 = True
+            i += 1
+        elif ch == "Y":
+            o.Y += 1
+        elif ch in "prDuAcj":
+            setattr(o, ch, True)
+    if o.r or not o.p:
+        o.A = False
+    return o
+
+
+# ---------------------------------------------------------------- mesh helpers
+
+
+def _arr(result: dict, key: str, cols: int) -> np.ndarray:
+    a = result.get(key)
+    if a is None or np.size(a) == 0:
+        return np.zeros((0, cols))
+    return np.asarray(a).reshape(len(a), -1)
+
+
+def n_rows(result: dict, key: str) -> int:
+    a = result.get(key)
+    return 0 if a is None else len(a)
+
+
+def used_vertices(result: dict) -> int:
+    t = _arr(result, "triangles", 3)
+    return int(np.unique(t[:, :3].astype(np.int64)).size)
+
+
+def _vertices(result: dict) -> np.ndarray:
+    return np.asarray(result.get("vertices", np.zeros((0, 2))), dtype=np.float64).reshape(-1, 2)
+
+
+def _tri_areas(result: dict) -> np.ndarray:
+    v = _vertices(result)
+    t = _arr(result, "triangles", 3)[:, :3].astype(np.int64)
+    a, b, c = v[t[:, 0]], v[t[:, 1]], v[t[:, 2]]
+    with np.errstate(over="ignore", invalid="ignore"):
+        return 0.5 * ((b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0]))
+
+
+def _total_area(result: dict) -> float:
+    """The mesh's area; inf when the sum overflows (math.fsum raises on that at ~2^512)."""
+    try:
+        return mesh_area({"vertices": _vertices(result), "triangles": _arr(result, "triangles", 3)[:, :3]})
+    except OverflowError:
+        return math.inf
+
+
+def _close(x: float, y: float, scale: float, slack: float = 0.0) -> bool:
+    return abs(x - y) <= AREA_RTOL * max(abs(scale), 1e-300) + slack or (math.isinf(x) and x == y)
+
+
+def rounding_slack(*results: dict) -> float:
+    """How much the domain's area may move because split points on segments
+    are rounded (each by about an ulp of the coordinates, times a segment
+    length): one unit roundoff times extent squared per vertex.  It matters
+    for slivers, whose area is tiny next to their extent."""
+    n = max(len(_vertices(r)) for r in results)
+    extent = max(float(np.abs(_vertices(r)).max(initial=0.0)) for r in results)
+    return 4.0 * n * 2.0**-53 * extent * extent
+
+
+def components(result: dict) -> np.ndarray:
+    """For each triangle, the label of its region: triangles joined across
+    edges that are not subsegments (Triangle spreads regions that way)."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+
+    t = _arr(result, "triangles", 3)[:, :3].astype(np.int64)
+    m = len(t)
+    if m == 0:
+        return np.zeros(0, dtype=np.int64)
+    nv = len(_vertices(result))
+    a = np.concatenate([t[:, 0], t[:, 1], t[:, 2]])
+    b = np.concatenate([t[:, 1], t[:, 2], t[:, 0]])
+    owner = np.tile(np.arange(m), 3)
+    key = np.minimum(a, b) * nv + np.maximum(a, b)
+    segs = _arr(result, "segments", 2).astype(np.int64)
+    seg_keys = np.minimum(segs[:, 0], segs[:, 1]) * nv + np.maximum(segs[:, 0], segs[:, 1]) if len(segs) else np.zeros(0)
+    order = np.argsort(key, kind="stable")
+    k, o = key[order], owner[order]
+    pair = np.flatnonzero(k[1:] == k[:-1])
+    pair = pair[~np.isin(k[pair], seg_keys)]
+    g = coo_matrix((np.ones(len(pair)), (o[pair], o[pair + 1])), shape=(m, m))
+    return connected_components(g, directed=False)[1]
+
+
+def unsegmented_boundary(result: dict) -> int:
+    """Boundary edges (one triangle) that are not subsegments.  Under ``p``
+    or ``c`` (without ``r``) there are none: Triangle eats triangles from the
+    hull inwards until segments stop it, and ``c`` makes the hull segments."""
+    t = _arr(result, "triangles", 3)[:, :3].astype(np.int64)
+    if not len(t):
+        return 0
+    nv = len(_vertices(result))
+    a = np.concatenate([t[:, 0], t[:, 1], t[:, 2]])
+    b = np.concatenate([t[:, 1], t[:, 2], t[:, 0]])
+    key = np.minimum(a, b) * nv + np.maximum(a, b)
+    uniq, count = np.unique(key, return_counts=True)
+    boundary = uniq[count == 1]
+    segs = _arr(result, "segments", 2).astype(np.int64)
+    seg_keys = np.minimum(segs[:, 0], segs[:, 1]) * nv + np.maximum(segs[:, 0], segs[:, 1]) if len(segs) else np.zeros(0)
+    return int((~np.isin(boundary, seg_keys)).sum())
+
+
+def phantom_segments(result: dict, tri: dict, rtol: float = 1e-9) -> list[int]:
+    """Output subsegments that lie on no input segment (under ``p`` without
+    ``c``, every subsegment is a piece of an input segment).  Coordinates
+    are scaled by a power of two first, so inputs at 2^512 do not overflow;
+    split points may sit an ulp or so off their segment, hence ``rtol``."""
+    segs = _arr(result, "segments", 2).astype(np.int64)
+    ins = np.asarray(tri.get("segments", np.zeros((0, 2))), dtype=np.int64).reshape(-1, 2)
+    if not len(segs):
+        return []
+    iv, ov = _vertices(tri), _vertices(result)
+    big = max(float(np.abs(iv).max(initial=0.0)), float(np.abs(ov).max(initial=0.0)))
+    if not math.isfinite(big) or big == 0:
+        return []
+    k = -math.frexp(big)[1]
+    iv, ov = np.ldexp(iv, k), np.ldexp(ov, k)
+    if not len(ins):
+        return list(range(len(segs)))
+    a, b = iv[ins[:, 0]][None], iv[ins[:, 1]][None]  # (1, S, 2)
+    d = b - a
+    length = np.hypot(d[..., 0], d[..., 1])
+    ok = np.ones(len(segs), dtype=bool)
+    for end in (0, 1):
+        p = ov[segs[:, end]][:, None]  # (M, 1, 2)
+        cross = d[..., 0] * (p[..., 1] - a[..., 1]) - d[..., 1] * (p[..., 0] - a[..., 0])
+        t = (d[..., 0] * (p[..., 0] - a[..., 0]) + d[..., 1] * (p[..., 1] - a[..., 1])) / np.maximum(length**2, 1e-300)
+        on = (np.abs(cross) <= rtol * np.maximum(length, 1e-300) + 1e-300) & (t >= -rtol) & (t <= 1 + rtol)
+        ok_end = on if end == 0 else on & ok_pair
+        ok_pair = on
+    ok = ok_end.any(axis=1)
+    return np.flatnonzero(~ok).tolist()
+
+
+def _containing(result: dict, xy) -> np.ndarray:
+    """Indices of the triangles whose closed interior holds point ``xy`` (exact)."""
+    v = _vertices(result)
+    t = _arr(result, "triangles", 3)[:, :3].astype(np.int64)
+    if not len(t):
+        return np.zeros(0, dtype=np.int64)
+    p = np.broadcast_to(np.asarray(xy, dtype=np.float64), (len(t), 2))
+    s = [np.asarray(orient_signs(v[t[:, i]], v[t[:, (i + 1) % 3]], p)) for i in range(3)]
+    return np.flatnonzero((s[0] >= 0) & (s[1] >= 0) & (s[2] >= 0))
+
+
+def region_labels(result: dict, regions) -> tuple[dict, list]:
+    """(component -> (attribute, max_area)) as Triangle spreads ``regions``
+    (each region overwrites the component it lies in, in list order), and
+    the regions whose point is ambiguous (on a segment between two regions)."""
+    comp = components(result)
+    label: dict = {}
+    ambiguous = []
+    for i, (x, y, attr, area) in enumerate(np.asarray(regions, dtype=np.float64).reshape(-1, 4)):
+        inside = _containing(result, (x, y))
+        if not len(inside):
+            continue
+        cs = set(comp[inside].tolist())
+        if len(cs) > 1:
+            ambiguous.append(i)
+            continue
+        label[cs.pop()] = (attr, area)
+    return label, ambiguous
+
+
+def attribute_areas(result: dict) -> dict:
+    """Total triangle area per triangle attribute value (first column)."""
+    att = _arr(result, "triangle_attributes", 1)
+    if not len(att):
+        return {}
+    areas = _tri_areas(result)
+    out = defaultdict(float)
+    for a, w in zip(att[:, 0].tolist(), areas.tolist()):
+        out[a] += w
+    return dict(out)
+
+
+def region_violations(result: dict, regions, comp_label=None) -> tuple[int, int]:
+    """(attribute mismatches, area-bound violations) of ``result`` against
+    the regions spread over its own components."""
+    label, _ = region_labels(result, regions) if comp_label is None else comp_label
+    comp = components(result)
+    att = _arr(result, "triangle_attributes", 1)
+    areas = _tri_areas(result)
+    bad_attr = bad_area = 0
+    for i, c in enumerate(comp.tolist()):
+        attr, bound = label.get(c, (0.0, -1.0))
+        if len(att) and att[i, 0] != attr:
+            bad_attr += 1
+        if bound > 0 and areas[i] > bound * (1 + 1e-12):
+            bad_area += 1
+    return bad_attr, bad_area
+
+
+def per_triangle_violations(result: dict, mesh_in: dict) -> int:
+    """Triangles of ``result`` larger than the ``triangle_max_area`` of the
+    input triangle holding their centroid (``r`` with a bare ``a``)."""
+    bounds = np.asarray(mesh_in.get("triangle_max_area", np.zeros(0)), dtype=np.float64).reshape(-1)
+    if not len(bounds) or not (bounds > 0).any():
+        return 0
+    v = _vertices(result)
+    t = _arr(result, "triangles", 3)[:, :3].astype(np.int64)
+    cen = v[t].mean(axis=1)
+    iv = np.asarray(mesh_in["vertices"], dtype=np.float64)
+    it = np.asarray(mesh_in["triangles"], dtype=np.int64)[:, :3]
+    a, b, c = iv[it[:, 0]], iv[it[:, 1]], iv[it[:, 2]]
+    areas = _tri_areas(result)
+    bad = 0
+    for k in range(0, len(cen), 512):
+        p = cen[k : k + 512, None, :]
+
+        def side(u, w):
+            return (w[None, :, 0] - u[None, :, 0]) * (p[..., 1] - u[None, :, 1]) - (w[None, :, 1] - u[None, :, 1]) * (p[..., 0] - u[None, :, 0])
+
+        score = np.minimum(np.minimum(side(a, b), side(b, c)), side(c, a))
+        host = np.argmax(score, axis=1)
+        bnd = bounds[host]
+        bad += int(((bnd > 0) & (areas[k : k + 512] > bnd * (1 + 1e-12))).sum())
+    return bad
+
+
+# ---------------------------------------------------------------- judging
+
+
+def _pslg(case: Case, sw: Switches) -> dict | None:
+    return case.input if sw.p else None
+
+
+def _problem_kind(line: str) -> str:
+    words = re.sub(r"[-+0-9.e]+(?=[\s,)\]]|$)", "#", line).replace("(", " ").split()
+    return " ".join(w for w in words[:5] if w != "#")
+
+
+def ordinary_scale(tri: dict) -> bool:
+    """Every nonzero coordinate between 2^-200 and 2^200: Triangle's exact
+    predicates (products of up to four coordinate differences) neither
+    underflow nor overflow, so its answer, even an empty mesh, is a reference."""
+    v = np.abs(_vertices(tri))
+    v = v[v > 0]
+    return bool(not v.size or (v.min() >= 2.0**-200 and v.max() <= 2.0**200))
+
+
+def dropped_vertices(result: dict, tri: dict) -> list[int]:
+    """Input vertices that lie in the mesh (exactly, closed triangles) but are
+    not vertices of it: silently lost.  (A vertex eaten with a hole or
+    outside the domain lies in no triangle; a duplicate has its twin's
+    coordinates.)  Compared by coordinates, so ``j``'s renumbering is fine."""
+    out = _vertices(result)
+    t = _arr(result, "triangles", 3)[:, :3].astype(np.int64)
+    if not len(t):
+        return []
+    corners = {tuple(p) for p in out[np.unique(t)].tolist()}
+    lost = []
+    for i, p in enumerate(_vertices(tri).tolist()):
+        if tuple(p) not in corners and len(_containing(result, p)):
+            lost.append(i)
+    return lost
+
+
+def triangle_meets_angle(result: dict, pslg, angle: float) -> bool:
+    try:
+        rep = quality_report(result, pslg, angle)
+    except OverflowError:  # quality_report's area sum overflows at ~2^512: ask check_mesh instead
+        probs = check_mesh(result, pslg, min_angle=angle, delaunay=False, markers=False)
+        return not any("minimum angle" in p for p in probs)
+    return rep["n_bad"] - rep["n_exempt"] == 0
+
+
+def judge(case: Case, tri: Outcome, ours: Outcome, spread=None) -> Verdict:
+    with np.errstate(over="ignore", invalid="ignore", under="ignore"):
+        return _judge(case, tri, ours, spread)
+
+
+def _judge(case: Case, tri: Outcome, ours: Outcome, spread) -> Verdict:
+    """Judge ours against Triangle on ``case``.  ``spread()`` returns Triangle's
+    vertex counts (used vertices) over the exact re-expressions of the input;
+    it is called only when ours is above the plain size bound."""
+    v = Verdict()
+    sw = read_switches(case.switches)
+    v.notes["triangle"] = tri.summary()
+    v.notes["ours"] = ours.summary()
+    v.notes["ours_seconds"] = round(ours.seconds, 3)
+    pslg = _pslg(case, sw)
+
+    # is Triangle's answer a valid mesh? (then ours must make one too)
+    t_ok = tri.status == "ok"
+    # with r the given triangles come back as they are (and refinement only
+    # flips around new vertices): Delaunay is asked of ours where Triangle's is
+    delaunay = not sw.r
+    if t_ok:
+        t_probs = check_mesh(tri.result, pslg=pslg if "segments" in tri.result else None, delaunay=delaunay)
+        if sw.r and not t_probs:
+            delaunay = not check_mesh(tri.result, pslg=pslg if "segments" in tri.result else None, markers=False)
+        if t_probs:
+            v.notes["triangle_invalid"] = t_probs[:3]
+            t_ok = False
+
+    if ours.status in ("crash", "timeout"):
+        v.fail(f"ours-{ours.status}", "", f"ours: {ours.message}; Triangle: {tri.summary()}")
+        return v
+    if ours.status == "error":
+        if ours.exc_type not in ALLOWED_ERRORS or not ours.message.strip():
+            v.fail("ours-exception", ours.exc_type, f"ours raises {ours.exc_type}: {ours.message}\n{ours.traceback}")
+        elif t_ok and (n_rows(tri.result, "triangles") or ordinary_scale(case.input)):
+            # at extreme scales an empty answer of Triangle's is no better than a clear error
+            v.fail("ours-error-where-triangle-meshes", ours.exc_type,
+                   f"ours raises {ours.exc_type}: {ours.message}; Triangle: {tri.summary()}")
+        return v
+
+    res = ours.result
+    t_res = tri.result if t_ok else None
+    if t_res is not None and not n_rows(t_res, "triangles") and n_rows(res, "triangles") and not ordinary_scale(case.input):
+        # Triangle found no triangle (its predicates under- or overflow at
+        # extreme scales, and it calls the input collinear): ours' mesh is
+        # judged on its own
+        v.notes["triangle_empty"] = True
+        t_res = None
+    angle = sw.angle if (sw.q and sw.angle > 0 and sw.S is None) else None
+    max_area = sw.area if (sw.area is not None and sw.S is None) else None
+    if t_res is None:
+        angle = max_area = None  # no reference for the bounds: only validity is asked
+    elif n_rows(t_res, "triangles"):
+        # Y, YY (no splitting of segments) can make both bounds unreachable:
+        # a bound is asked of ours where Triangle's own mesh meets it
+        if angle is not None:
+            meets = triangle_meets_angle(t_res, pslg, angle)
+            v.notes["triangle_meets_angle"] = meets
+            if not meets:
+                angle = None
+        if max_area is not None:
+            meets = bool((_tri_areas(t_res) <= max_area * (1 + 1e-12)).all())
+            v.notes["triangle_meets_area"] = meets
+            if not meets:
+                max_area = None
+    try:
+        probs = check_mesh(res, pslg=pslg if "segments" in res else None, min_angle=angle, max_area=max_area,
+                           delaunay=delaunay)
+    except Exception as exc:  # the checker itself must cope with whatever it is given
+        v.fail("checker-error", type(exc).__name__, f"check_mesh raised {type(exc).__name__}: {exc}")
+        return v
+    if probs:
+        v.fail("invalid-mesh", _problem_kind(probs[0]), "; ".join(probs[:4]))
+    if lost := dropped_vertices(res, case.input):
+        v.fail("dropped-vertex", "", f"input vertices {lost[:5]} lie in ours' mesh but are not vertices of it")
+    if sw.p and not sw.c and not sw.r and (phantom := phantom_segments(res, case.input)):
+        v.fail("phantom-segment", "", f"{len(phantom)} output segments of ours lie on no input segment "
+               f"(first: {_arr(res, 'segments', 2)[phantom[0]].tolist()})")
+    if (sw.p or sw.c) and not sw.r and (open_edges := unsegmented_boundary(res)):
+        v.fail("boundary-not-segment", "", f"{open_edges} boundary edges of ours are not segments "
+               "(under p or c, triangles are eaten up to segments)")
+
+    if t_res is None:
+        return v
+
+    # both made a valid mesh: compare
+    if sw.o2 and n_rows(t_res, "triangles"):
+        t_cols, o_cols = _arr(t_res, "triangles", 3).shape[1], _arr(res, "triangles", 3).shape[1]
+        if o_cols != t_cols:
+            v.fail("o2", "", f"o2: Triangle gives {t_cols}-node triangles ({n_rows(t_res, 'vertices')} nodes), "
+                   f"ours {o_cols}-node ({n_rows(res, 'vertices')} nodes)")
+
+    scale = t_area = _total_area(t_res)
+    o_area = _total_area(res)
+    finite = math.isfinite(t_area) and math.isfinite(o_area)  # areas of ~1e300 meshes overflow
+    slack = rounding_slack(t_res, res) if finite else 0.0
+    if finite and not _close(t_area, o_area, scale, slack):
+        v.fail("area-total", "", f"total area: Triangle {t_area!r}, ours {o_area!r}")
+
+    if sw.A and "regions" in case.input and finite:
+        ta, oa = attribute_areas(t_res), attribute_areas(res)
+        if set(ta) != set(oa) or any(not _close(ta[k], oa.get(k, 0.0), scale, slack) for k in ta):
+            v.fail("attributes", "", f"area per attribute: Triangle {ta}, ours {oa}")
+
+    if not sw.refining:
+        _equal_counts(v, case, sw, t_res, res)
+    else:
+        _refining(v, case, sw, pslg, t_res, res, spread)
+    if sw.p and not sw.r and "regions" in case.input and (sw.A or sw.variable_area) and sw.S is None:
+        _regions(v, case, sw, t_res, res)
+    return v
+
+
+def near_duplicate_merges(result: dict, rtol: float = 1e-12) -> int:
+    """How many vertices merge into others within ``rtol`` of the mesh's extent.
+    Triangle computes the crossing of one segment with two overlapping
+    collinear segments twice, and the two roundings can differ by an ulp:
+    two vertices for one crossing."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+    from scipy.spatial import cKDTree
+
+    xy = _vertices(result)
+    if len(xy) < 2 or not np.isfinite(xy).all():
+        return 0
+    extent = float(np.abs(xy).max())
+    pairs = np.array(sorted(cKDTree(xy).query_pairs(rtol * extent)), dtype=np.int64).reshape(-1, 2)
+    pairs = pairs[(xy[pairs[:, 0]] != xy[pairs[:, 1]]).any(axis=1)]  # exact duplicates are input duplicates
+    if not len(pairs):
+        return 0
+    g = coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])), shape=(len(xy), len(xy)))
+    return len(xy) - connected_components(g, directed=False)[0]
+
+
+def _equal_counts(v: Verdict, case: Case, sw: Switches, t_res: dict, res: dict) -> None:
+    merges = near_duplicate_merges(t_res) if n_rows(t_res, "vertices") != n_rows(res, "vertices") else 0
+    if merges and n_rows(t_res, "vertices") - merges == n_rows(res, "vertices"):
+        v.notes["triangle_near_duplicates"] = merges  # counts follow from Triangle's extra vertices
+        return
+    o2_differs = any(f.kind == "o2" for f in v.failures)  # the midpoint nodes are missing: counted once
+    for key in ("vertices", "triangles", "segments", "edges", "neighbors"):
+        if key == "vertices" and o2_differs:
+            continue
+        if n_rows(t_res, key) != n_rows(res, key):
+            v.fail("count", key, f"{key}: Triangle {n_rows(t_res, key)}, ours {n_rows(res, key)}")
+    n_in = len(case.input["vertices"])
+    outside_only = False
+    if not sw.j and n_rows(t_res, "vertex_markers") >= n_in and n_rows(res, "vertex_markers") >= n_in:
+        tm = _arr(t_res, "vertex_markers", 1)[:n_in, 0]
+        om = _arr(res, "vertex_markers", 1)[:n_in, 0]
+        diff = np.flatnonzero(tm != om)
+        if len(diff):
+            used = np.zeros(max(n_rows(t_res, "vertices"), n_in), dtype=bool)
+            used[_arr(t_res, "triangles", 3)[:, :3].astype(np.int64).ravel()] = True
+            outside_only = not used[diff].any()
+            i = int(diff[0])
+            # a vertex in no triangle of Triangle's (eaten, outside the domain, or no triangle at all)
+            detail = "outside-domain" if outside_only else "input-vertex"
+            v.fail("markers", detail, f"input vertex {i}: Triangle's marker {tm[i]}, ours {om[i]} "
+                   f"({len(diff)} input vertices differ)")
+    for key in ("vertex_markers", "segment_markers", "edge_markers"):
+        if key == "vertex_markers" and (o2_differs or outside_only):
+            continue
+        tm = Counter(_arr(t_res, key, 1).reshape(-1).tolist())
+        om = Counter(_arr(res, key, 1).reshape(-1).tolist())
+        if tm != om:
+            v.fail("markers", key, f"{key} multiset: Triangle {dict(tm)}, ours {dict(om)}")
+
+
+def _refining(v: Verdict, case: Case, sw: Switches, pslg, t_res: dict, res: dict, spread) -> None:
+    t_n, o_n = used_vertices(t_res), used_vertices(res)
+    v.notes["vertices"] = {"triangle": t_n, "ours": o_n}
+    bound = t_n * (1 + SIZE_SLACK[0]) + SIZE_SLACK[1]
+    if o_n > bound and spread is not None:
+        counts = spread()
+        v.notes["triangle_spread"] = counts
+        if counts:
+            bound = max(bound, max(counts) * (1 + SPREAD_SLACK[0]) + SPREAD_SLACK[1])
+    if o_n > bound:
+        v.fail("size", "", f"ours uses {o_n} vertices, Triangle {t_n} (bound {bound:.1f}, "
+               f"Triangle over re-expressions {v.notes.get('triangle_spread')})")
+
+    if sw.S is not None:
+        return  # a Steiner budget stops both early, where their orders differ
+    if sw.variable_area and sw.r:
+        t_bad = per_triangle_violations(t_res, case.input)
+        o_bad = per_triangle_violations(res, case.input)
+        v.notes["triangle_per_triangle_violations"] = t_bad
+        if t_bad == 0 and o_bad:
+            v.fail("triangle-area", "", f"{o_bad} triangles of ours exceed the bound of the input triangle "
+                   "holding them (Triangle: none)")
+
+
+def _regions(v: Verdict, case: Case, sw: Switches, t_res: dict, res: dict) -> None:
+    """Attributes (``A``) and area bounds (bare ``a``) per region, where
+    Triangle's own mesh follows the same spreading rule."""
+    labels = region_labels(t_res, case.input["regions"])
+    if labels[1]:
+        v.notes["ambiguous_regions"] = labels[1]
+        return
+    t_attr, t_area = region_violations(t_res, case.input["regions"], labels)
+    o_attr, o_area = region_violations(res, case.input["regions"])
+    v.notes["triangle_region_violations"] = {"attribute": t_attr, "area": t_area}
+    if sw.variable_area and t_area == 0 and o_area:
+        v.fail("region-area", "", f"{o_area} triangles of ours exceed their region's area bound (Triangle: none)")
+    if sw.A and t_attr == 0 and o_attr:
+        v.fail("region-attribute", "", f"{o_attr} triangles of ours carry another region's attribute (Triangle: none)")
