@@ -87,6 +87,29 @@ def test_strategy_sweep_marks_the_least_work():
     assert least[0]["goal_met"] in (True, False)
 
 
+@needs_pebble
+def test_a_strategy_cut_by_the_time_limit(monkeypatch):
+    """A strategy cut in every round is a timeout row; one cut only in a later
+    round keeps its best time and says so."""
+    from instrument.study import ours_engine
+
+    real = ours_engine.run_ours_isolated
+    calls: dict = {}
+
+    def cut(data, opts, strategy, **kw):
+        calls[strategy] = calls.get(strategy, 0) + 1
+        if strategy == "lifo" or (strategy == "fifo" and calls[strategy] > 1):
+            raise ours_engine.EngineTimeout("cut")
+        return real(data, opts, strategy, **kw)
+
+    monkeypatch.setattr(ours_engine, "run_ours_isolated", cut)
+    rows = timing.bench_in_process("quad-tiny", 2, False, strategies=["triangle", "fifo", "lifo"], cgal=False,
+                                   stats=False, timeout=60)
+    fifo, lifo = rows[1], rows[2]
+    assert fifo["ours_s"] > 0 and "later round" in fifo["note"] and calls["fifo"] == 2
+    assert lifo["ours_s"] is None and lifo["note"].startswith("timeout") and calls["lifo"] == 1
+
+
 @pytest.mark.skipif(not HAS_CGAL, reason="no CGAL bindings")
 def test_cgal_counterparts():
     from instrument.study.bench import engines
@@ -200,6 +223,15 @@ def test_cold_plumbing_without_installing(tmp_path):
     assert row["triangles"] == {"ours": 87, "triangle": 87}
     assert row["ours_s"] == c["first"]["s"] and row["ours_mb"] == c["first"]["mb"]
     assert list(tmp_path.iterdir()) == []  # the temporary directory is gone
+    assert set(row["startup"]) == {"python -c pass", "python -c 'import numpy'", "python -c 'import ruppert_io.cli'"}
+    assert ["ruppert_io.cli"] in [item["path"] for item in row["importtime"]]
+    from instrument.study.bench import report
+
+    md = tmp_path / "cold.md"
+    report.write_markdown(md, [row], {"command": "test", "provenance": "test", "machine": report.machine(),
+                                      "load_start": [0, 0, 0], "load_end": [0, 0, 0]})
+    text = md.read_text()
+    assert "Cold start (cold)" in text and "| first run |" in text and "Start-up of cold (in the fresh venv)" in text
 
 
 def test_cold_copies_the_checkout_without_build_products(tmp_path):

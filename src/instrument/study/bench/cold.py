@@ -29,7 +29,7 @@ import tempfile
 import time
 from pathlib import Path
 
-from .commands import Environment, prepare, run_side
+from .commands import Environment, importtime, prepare, run_side, startup
 from .timing import new_row
 from .workloads import WORKLOADS
 
@@ -139,12 +139,15 @@ def resolve_source(source: str | None, workdir: Path) -> str:
 
 
 def bench_cold(name: str = "cold", *, source: str | None = None, make_environment=FreshVenv,
-               workdir: Path | None = None) -> list[dict]:
-    """Run the cold workload: one row, the first runs as its times, every step in ``row["cold"]``.
+               workdir: Path | None = None, startup_repeat: int = 3) -> list[dict]:
+    """Run the cold workload: one row, the first runs as its times, every step
+    in ``row["cold"]``; then, in the same environment, the command's start-up
+    floors (best of ``startup_repeat``; 0: none) and ``importtime``.
 
     ``make_environment(root, source)`` makes the environment (``FreshVenv``;
     the tests give one that installs nothing)."""
     w = WORKLOADS[name]
+    row = new_row(name, w, "triangle")
     with tempfile.TemporaryDirectory(prefix="ruppert-cold-", dir=workdir) as tmp:
         root = Path(tmp)
         requirement = resolve_source(source, root)
@@ -162,12 +165,15 @@ def bench_cold(name: str = "cold", *, source: str | None = None, make_environmen
         for which in ("first", "second"):
             run, sizes["triangle"] = run_side("triangle", env, w.opts, path)
             steps[f"triangle_{which}"] = {"s": run.wall_s, "mb": run.peak_mb}
-    row = new_row(name, w, "triangle")
+        floors = startup(env, run_dir, startup_repeat) if startup_repeat else {}
+        imports = importtime(env.python, "ruppert_io.cli", runs=3, variables=env.variables) if startup_repeat else []
     row.update(triangles=sizes, ours_s=steps["first"]["s"], triangle_s=steps["triangle_first"]["s"],
                ours_mb=steps["first"]["mb"], triangle_mb=steps["triangle_first"]["mb"])
     row["ratio"] = row["ours_s"] / row["triangle_s"]
     row["memory_ratio"] = row["ours_mb"] / row["triangle_mb"]
     row["cold"] = steps
+    if floors:
+        row["startup"], row["importtime"] = floors, imports
     row["note"] = (f"fresh venv {steps['venv_s']:.1f} s, pip install {steps['install_s']:.1f} s; first run "
                    f"{steps['first']['s']:.3f} s, second {steps['second']['s']:.3f} s; Triangle's script after pip "
                    f"install {TRIANGLE_REQUIREMENT} ({steps['triangle_install_s']:.1f} s)")

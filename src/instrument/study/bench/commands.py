@@ -9,7 +9,7 @@ script reads the file with the `triangle` package, meshes it and writes the
 same three files).
 
 Beside the command the workload times what any such command pays before it
-meshes anything: the interpreter alone (``python -c pass``), numpy's import
+meshes anything (after the command's rounds, not interleaved with them): the interpreter alone (``python -c pass``), numpy's import
 (the engine's one required dependency) and ``import ruppert_io.cli``; and it
 breaks the last one down with ``python -X importtime``.
 """
@@ -92,14 +92,25 @@ def floors(env: Environment) -> dict[str, list[str]]:
     }
 
 
+def startup(env: Environment, cwd: Path, repeat: int) -> dict[str, dict[str, float]]:
+    """The floors (``floors``), each the best of ``repeat`` runs, with its peak memory (the largest)."""
+    got = {}
+    for what, argv in floors(env).items():
+        runs = [run_command(argv, cwd, timeout=COMMAND_TIMEOUT_S, env=env.variables) for _ in range(repeat)]
+        got[what] = {"s": min(r.wall_s for r in runs), "mb": max(r.peak_mb for r in runs)}
+    return got
+
+
 def bench_command(name: str, repeat: int, *, env: Environment | None = None, importtime_runs: int = 3) -> list[dict]:
-    """Time a command workload: best of ``repeat`` rounds (ours, Triangle's
-    script, then the start-up floors), after one untimed run of each side
-    (the files in the page cache).  Peak memory is the largest of the runs'."""
+    """Time a command workload: best of ``repeat`` rounds (ours, then
+    Triangle's script), after one untimed run of each side (the files in the
+    page cache); then the start-up floors and ``importtime``.  Peak memory is
+    the largest of the runs'."""
     import tempfile
 
     w = WORKLOADS[name]
     env = env or this_environment()
+    row = new_row(name, w, "triangle")
     best: dict[str, float] = {}
     peak: dict[str, float] = {}
     sizes: dict[str, int] = {}
@@ -112,15 +123,10 @@ def bench_command(name: str, repeat: int, *, env: Environment | None = None, imp
                 run, sizes[engine] = run_side(engine, env, w.opts, path)
                 best[engine] = min(best.get(engine, math.inf), run.wall_s)
                 peak[engine] = max(peak.get(engine, 0.0), run.peak_mb)
-            for what, argv in floors(env).items():
-                run = run_command(argv, Path(tmp), timeout=COMMAND_TIMEOUT_S, env=env.variables)
-                best[what] = min(best.get(what, math.inf), run.wall_s)
-                peak[what] = max(peak.get(what, 0.0), run.peak_mb)
-    row = new_row(name, w, "triangle")
+        row["startup"] = startup(env, Path(tmp), repeat)
     row.update(triangles=sizes, ours_s=best["ours"], triangle_s=best["triangle"],
                ratio=best["ours"] / best["triangle"], ours_mb=peak["ours"], triangle_mb=peak["triangle"],
                memory_ratio=peak["ours"] / peak["triangle"])
-    row["startup"] = {what: {"s": best[what], "mb": peak[what]} for what in floors(env)}
     row["importtime"] = (importtime(env.python, "ruppert_io.cli", runs=importtime_runs, variables=env.variables)
                          if importtime_runs else [])
     if w.goal is not None:

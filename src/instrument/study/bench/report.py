@@ -97,14 +97,17 @@ def startup_section(row) -> tuple[str, list[str], list[list[str]]]:
     def ms(v) -> str:
         return f"{1000 * v:.1f}"
 
-    body = [[f"`{row['workload']}` (the whole command)", ms(row["ours_s"]), "", fmt_mb(row["ours_mb"])]]
+    which = "first run after the install" if "cold" in row else "best of the rounds"
+    body = [[f"`ruppert {row['switches']} A.poly` ({which})", ms(row["ours_s"]), "", fmt_mb(row["ours_mb"])]]
     body += [[f"`{what}`", ms(v["s"]), "", fmt_mb(v["mb"])] for what, v in row["startup"].items()]
     for item in row.get("importtime", []):
         depth = len(item["path"]) - 1
         body.append([f"{'. ' * depth}import `{item['path'][-1]}`", f"{item['cumulative_ms']:.1f}",
                      f"{item['self_ms']:.1f}", ""])
-    title = (f"Start-up of {row['workload']}: best of the rounds, then `python -X importtime -c \"import "
-             "ruppert_io.cli\"` (least of 3 runs; imports of 5 ms or more, four levels deep)")
+    where = " (in the fresh venv)" if "cold" in row else ""
+    title = (f"Start-up of {row['workload']}{where}: the command, what it pays before meshing (best of the "
+             "rounds), then `python -X importtime -c \"import ruppert_io.cli\"` (least of 3 runs; imports of 5 ms "
+             "or more, four levels deep)")
     return title, ["what", "ms", "self ms", "peak MB"], body
 
 
@@ -135,10 +138,10 @@ def profile_section(name: str, opts: str, strategy: str, prof) -> tuple[str, lis
 def sections(rows, profiles) -> list[tuple[str, list[str], list[list[str]]]]:
     out = []
     for row in rows:
-        if "startup" in row:
-            out.append(startup_section(row))
         if "cold" in row:
             out.append(cold_section(row))
+        if "startup" in row:
+            out.append(startup_section(row))
     out += [profile_section(*p) for p in profiles]
     return out
 

@@ -35,7 +35,7 @@ def new_row(name: str, w: Workload, strategy: str, threads: int | None = None) -
         "switches": w.opts,
         "strategy": strategy,
         "threads": threads,
-        "load_avg": list(os.getloadavg()),
+        "load_avg": list(os.getloadavg()),  # the 1, 5 and 15-minute load averages when the row is begun
         "triangles": {},
         "ours_s": None,
         "triangle_s": None,
@@ -67,6 +67,7 @@ def bench_in_process(name: str, repeat: int, memory: bool, *, strategies: list[s
     from ..cgal_engine import has_cgal
 
     w = WORKLOADS[name]
+    load = list(os.getloadavg())  # as the workload begins
     strategies = (strategies or available_strategies()) if w.sweep else ["triangle"]
     isolated = w.sweep and timeout > 0
     cgal = cgal and w.cgal and has_cgal()
@@ -115,7 +116,7 @@ def bench_in_process(name: str, repeat: int, memory: bool, *, strategies: list[s
     mem, mem_failed = {}, {}
     if memory:
         for e in engine_list:
-            if e in failed:
+            if best[e] == math.inf:
                 continue
             try:
                 mem[e] = engine_peak_mb(name, e[0], e[1] or "triangle", threads if e[0] == "ours" else None,
@@ -128,15 +129,18 @@ def bench_in_process(name: str, repeat: int, memory: bool, *, strategies: list[s
     for s in strategies:
         e = ("ours", s)
         row = new_row(name, w, s, threads)
+        row["load_avg"] = load
         row["triangles"] = {"ours": size.get(e), "triangle": size[tri_e]}
         row["triangle_s"] = tri_s
         if cgal:
             row["triangles"]["cgal"] = size[cgal_e]
             row["cgal_s"] = best[cgal_e]
-        if e in failed:
+        if best[e] == math.inf:  # not one round finished
             row["note"] = failed[e]
             rows.append(row)
             continue
+        if e in failed:
+            row["note"] = f"a later round: {failed[e]}"
         row["ours_s"], row["ratio"] = best[e], best[e] / tri_s
         if cgal:
             row["cgal_ratio"] = best[e] / best[cgal_e]
@@ -154,7 +158,7 @@ def bench_in_process(name: str, repeat: int, memory: bool, *, strategies: list[s
             problems = [f"{'/'.join(x for x in k if x)} memory: {v}" for k, v in mem_failed.items()
                         if k in (e, tri_e, cgal_e)]
             if problems:
-                row["note"] = "; ".join(problems)
+                row["note"] = "; ".join(([row["note"]] if row["note"] else []) + problems)
         rows.append(row)
     mark_goals(w, rows)
     return rows
