@@ -30,8 +30,9 @@ def test_importing_instrument_and_running_ruppert_loads_no_study_dependency(tmp_
 
 
 def test_the_engine_runners_need_no_dask():
-    """``instrument.study.engines`` (what scripts/bench.py uses) loads without the sweep's dependencies."""
+    """``instrument.study.engines`` and the benchmark load without the sweep's dependencies."""
     probe = ("import sys; import instrument.study.engines, instrument.study.compare; "
+             "import instrument.study.bench.main, instrument.study.bench.timing, instrument.study.bench.cold; "
              f"print(sorted(m for m in sys.modules if m.split('.')[0] in {HEAVY[:3]!r}))")
     proc = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, timeout=300, check=False)
     assert proc.returncode == 0, proc.stderr

@@ -13,7 +13,10 @@ Each part runs as ``python -m instrument.study.NAME --help``:
 * ``compare``: the same inputs through every engine, as one table (sizes that
   match while the work differs);
 * ``quadratic``: Barbič and Miller's quadratic example I(n): Theorem 3's
-  script, every strategy, Triangle and CGAL, fitted slopes and figures.
+  script, every strategy, Triangle and CGAL, fitted slopes and figures;
+* ``bench``: the benchmark: fixed workloads (Delaunay of 10^5 to 10^7
+  points, a PSLG, quality meshes, the ``ruppert`` command warm and after a
+  fresh install) against Triangle and CGAL, time and peak memory.
 
 The engine (``instrument``) and the ``ruppert`` command never import this
 package; ``engines`` and its runners need only numpy and the engines

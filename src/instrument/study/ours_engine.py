@@ -1,7 +1,7 @@
 """Our engine as one of the study's engines: ``instrument.triangulate``, timed.
 
-Compilation (numba's, or loading its cache) is never timed: ``warm_up`` runs
-the engine once on a tiny input with the same switches and strategy first.
+Loading the compiled kernels is never timed: ``warm_up`` runs the engine
+once on a tiny input with the same switches and strategy first.
 Every engine's runner times ``repeat`` runs and keeps the best, but stops
 after a run of more than ``LONG_RUN_S`` seconds (its noise is small then).
 """
@@ -54,30 +54,52 @@ def available_strategies() -> list[str]:
     return names or ["triangle"]
 
 
-def warm_up(opts: str, strategy: str = "triangle") -> None:
-    """Run our engine once on a tiny input so that compiling (or loading the
-    compiled kernels) is not timed; once per switches and strategy."""
+def engine_options(threads: int | None = None) -> dict:
+    """Keyword arguments for ``instrument.triangulate`` beyond switches and
+    strategy: ``threads`` only when given (an engine without the keyword
+    still runs every other call).  Raises ``TypeError`` when ``threads`` is
+    given and this engine's ``triangulate`` does not take it."""
+    if threads is None:
+        return {}
+    import inspect
+
+    import instrument
+
+    if "threads" not in inspect.signature(instrument.triangulate).parameters:
+        raise TypeError("this ruppert's instrument.triangulate takes no 'threads' argument")
+    return {"threads": int(threads)}
+
+
+def warm_up(opts: str, strategy: str = "triangle", threads: int | None = None) -> None:
+    """Run our engine once on a tiny input so that loading the compiled
+    kernels (and importing what they use) is not timed; once per switches,
+    strategy and thread count."""
     opts = _AREA.sub("", opts)  # the code path is the same; a small area on this box would be slow
-    key = f"{opts}\0{strategy}"
+    key = f"{opts}\0{strategy}\0{threads}"
     if key in _WARMED:
         return
     _WARMED.add(key)
     import instrument
 
+    kw = engine_options(threads)
     with contextlib.suppress(Exception):
-        instrument.triangulate(_WARM_INPUT, opts, strategy=strategy)
+        instrument.triangulate(_WARM_INPUT, opts, strategy=strategy, **kw)
 
 
-def run_ours(tri: dict, opts: str, strategy: str = "triangle", *, seed: int = 0, repeat: int = 3):
-    """Time our engine: (result, best wall time of ``repeat`` runs)."""
+def run_ours(tri: dict, opts: str, strategy: str = "triangle", *, seed: int = 0, repeat: int = 3,
+             threads: int | None = None):
+    """Time our engine: (result, best wall time of ``repeat`` runs).
+    ``threads``: passed to ``instrument.triangulate`` (``engine_options``)."""
     import instrument
 
-    warm_up(opts, strategy)
+    kw = engine_options(threads)
+    warm_up(opts, strategy, threads)
     best = math.inf
     out = None
     for _ in range(max(1, repeat)):
+        out = None  # the previous run's output goes before the next one is made
         t0 = time.perf_counter()
-        out = instrument.triangulate(tri, opts, strategy=strategy, seed=seed)
+        out = instrument.triangulate(tri, opts, strategy=strategy, seed=seed, **kw)
         best = min(best, time.perf_counter() - t0)
         if best > LONG_RUN_S:
             break
@@ -96,13 +118,13 @@ class EngineTimeout(RuntimeError):
 
 
 def run_ours_isolated(tri: dict, opts: str, strategy: str = "triangle", *, seed: int = 0, repeat: int = 3,
-                      timeout: float = 60.0):
+                      timeout: float = 60.0, threads: int | None = None):
     """``run_ours`` in a separate process killed after ``timeout`` seconds
     (``instrument.study.isolate``): (result dict, work, best wall time).
     Raises ``EngineTimeout``, ``NotImplementedError`` or ``RuntimeError``."""
     from . import isolate
 
-    outcome = isolate.call(_ours_plain, (tri, opts, strategy, seed, repeat), time_limit=timeout)
+    outcome = isolate.call(_ours_plain, (tri, opts, strategy, seed, repeat, threads), time_limit=timeout)
     if outcome.status == "ok":
         return outcome.value
     if outcome.status == "timeout":
@@ -112,7 +134,7 @@ def run_ours_isolated(tri: dict, opts: str, strategy: str = "triangle", *, seed:
     raise RuntimeError(outcome.message)
 
 
-def _ours_plain(tri, opts, strategy, seed, repeat):
+def _ours_plain(tri, opts, strategy, seed, repeat, threads=None):
     """``run_ours`` with plain values, to cross a process boundary."""
-    out, wall = run_ours(tri, opts, strategy, seed=seed, repeat=repeat)
+    out, wall = run_ours(tri, opts, strategy, seed=seed, repeat=repeat, threads=threads)
     return dict(out), dict(getattr(out, "work", {}) or {}), wall
