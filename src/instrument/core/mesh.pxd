@@ -126,5 +126,6 @@ cdef inline Index next_random(Mesh m) noexcept nogil:
 
 cpdef Index remove_ghosts(Mesh m) noexcept nogil
 cpdef void relabel_corners(Mesh m, long long[::1] label) noexcept nogil
+cpdef void turn_corners(Mesh m, Index shift) noexcept nogil
 cpdef void set_parent(Mesh m, Index v, Index p0, Index p1, Index p2, double s, double t) noexcept nogil
 cpdef void interpolate_attributes(Mesh m, double[:, ::1] out, Index first) noexcept nogil

@@ -231,18 +231,10 @@ class Mesh:
         old corner ``(k + shift) % 3`` (each triangle keeps its orientation),
         with its edges' twins and subsegments.  Edge numbers held elsewhere
         (the vertices' edge hints, queued edges) are stale afterwards."""
-        n = self.nslot
-        if n == 0 or shift % 3 == 0:
+        if self.nslot == 0 or shift % 3 == 0:
             return
         self.add_constraint_tables()
-        a = self.arrays()
-        k = np.arange(3 * n) % 3
-        old = np.arange(3 * n) - k + (k + shift) % 3  # the old edge each new edge number takes over
-        twin = a["twin"][old]
-        j = twin % 3
-        a["twin"][: 3 * n] = np.where(twin >= 0, twin - j + (j - shift) % 3, twin)
-        a["corner"][: 3 * n] = a["corner"][old]
-        a["seg"][: 3 * n] = a["seg"][old]
+        turn_corners(self, shift % 3)
 
     def arrays(self) -> dict:
         """The tables as numpy arrays (views, not copies), by name."""
@@ -286,6 +278,40 @@ def relabel_corners(m: Mesh, label: cython.longlong[::1]) -> cython.void:
         v = m.corner[e]
         if v >= 0:
             m.corner[e] = cython.cast(cython.int, label[v])
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def turn_corners(m: Mesh, shift: Index) -> cython.void:
+    """``Mesh.rotate_corners`` for ``shift`` 1 or 2, in one pass over the
+    slots (numpy's version took 0.18 s and several copies of the tables at
+    1.6 million triangles): new corner ``k`` is old corner ``(k + shift) %
+    3``; a twin, an edge of a triangle turned the same way, is renumbered
+    to match."""
+    e: Index
+    k: Index
+    src: Index
+    tw: Index
+    j: Index
+    c = cython.declare(cython.int[3])
+    w = cython.declare(cython.int[3])
+    s = cython.declare(cython.int[3])
+    for t in range(m.nslot):
+        e = 3 * t
+        for k in range(3):
+            c[k] = m.corner[e + k]
+            w[k] = m.twin[e + k]
+            s[k] = m.seg[e + k]
+        for k in range(3):
+            src = (k + shift) % 3
+            m.corner[e + k] = c[src]
+            m.seg[e + k] = s[src]
+            tw = w[src]
+            if tw >= 0:
+                j = tw % 3
+                tw = tw - j + (j - shift + 3) % 3
+            m.twin[e + k] = cython.cast(cython.int, tw)
 
 
 @cython.ccall
