@@ -116,21 +116,24 @@ DEFECTS = [
             "area-total", "count", "markers", "dropped-vertex"),
     ),
     Defect(
-        "duplicate-markers",
-        "a duplicate vertex gets its twin's boundary marker (1); Triangle leaves duplicates at 0 (and on inputs "
-        "without triangles, j keeps duplicates that Triangle jettisons)",
-        lambda c, f, n: has_duplicates(c) and f.kind in ("markers", "count") and f.detail in (
-            "input-vertex", "vertex_markers", "vertices"),
+        "duplicate-copy",
+        "divide and conquer keeps a different copy of a duplicate point than Triangle, whose choice follows its "
+        "randomized quicksort (ours keeps the lowest index), so a hull marker 1 lands on another copy: e.g. "
+        "[[0,0],[1,1],[0,0]] under Q gives Triangle [0, 0, 1], ours [1, 0, 0]",
+        lambda c, f, n: has_duplicates(c) and not read_switches(c.switches).i and f.kind == "markers"
+        and f.detail in ("input-vertex", "vertex_markers", "outside-domain"),
     ),
 ]
 
 DEFECTS += [
     Defect(
-        "hole-on-segment",
-        "a hole point exactly on a segment (or a vertex) makes ours eat both sides, often the whole domain; "
-        "Triangle eats one side",
-        lambda c, f, n: hole_on_segment(c) and f.kind in ("count", "area-total", "markers", "size", "region-area",
-                                                          "region-attribute", "attributes"),
+        "hole-on-segment-incremental",
+        "under i, a hole or region point exactly on a hull segment (or vertex): Triangle ignores it when it lies "
+        "on its start hull edge, which after incremental insertion is the edge arriving at input vertex 0 only "
+        "when that vertex is on the hull (otherwise not known); and which side of an interior segment it eats "
+        "follows Triangle's point location",
+        lambda c, f, n: hole_on_segment(c) and read_switches(c.switches).i and f.kind in (
+            "count", "area-total", "markers", "size", "region-area", "region-attribute", "attributes"),
     ),
     Defect(
         "steiner-budget",
