@@ -135,12 +135,6 @@ DEFECTS += [
         lambda c, f, n: hole_on_segment(c) and read_switches(c.switches).i and f.kind in (
             "count", "area-total", "markers", "size", "region-area", "region-attribute", "attributes"),
     ),
-    Defect(
-        "steiner-budget",
-        "S[n]: segment-intersection vertices do not use up ours' Steiner budget (in Triangle they do), so ours "
-        "adds up to n more vertices (11-point star, step 3, pa0.00485S12: Triangle 33 vertices, ours 45)",
-        lambda c, f, n: f.kind == "size" and read_switches(c.switches).S is not None,
-    ),
 ]
 
 DEFECTS += [
