@@ -211,13 +211,27 @@ def mesh_input(inp: dict, o: Options, work: np.ndarray, seed: int = 0, threads: 
     elif o.c or o.quality:  # refinement needs the hull as segments
         enclose_hull(ms)
     else:
-        mark_hull_vertices(ms)
+        mark_hull_vertices(ms, incremental=o.i)
     return ms
 
 
-def mark_hull_vertices(ms: MeshState) -> None:
-    """Triangulating a point set marks every hull vertex whose marker is 0 with 1."""
+def mark_hull_vertices(ms: MeshState, incremental: bool = False) -> None:
+    """Triangulating a point set marks every hull vertex whose marker is 0 with 1.
+
+    When every point is collinear there is no hull, and Triangle (observed
+    on the `triangle` package) marks the vertices its empty triangulation
+    passed through: after incremental insertion every vertex in the mesh;
+    after divide and conquer every one but the last in (x, y) order.
+    Duplicates keep their input markers either way."""
     m = ms.mesh
+    if ms.collinear:
+        vmark = np.asarray(m.vmark)
+        kept = np.flatnonzero(ms.dup < 0)
+        if not incremental and kept.size:
+            xy = np.asarray(m.xy)[kept]
+            kept = np.delete(kept, np.lexsort((xy[:, 1], xy[:, 0]))[-1])
+        vmark[kept[vmark[kept] == 0]] = 1
+        return
     n = m.nslot
     alive = np.repeat(np.asarray(m.stamp)[:n] > 0, 3)
     e = np.flatnonzero(alive & (np.asarray(m.twin)[: 3 * n] == -1))

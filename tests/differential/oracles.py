@@ -95,6 +95,7 @@ class Switches:
     A: bool = False
     c: bool = False
     j: bool = False
+    i: bool = False  # incremental Delaunay (Triangle's start hull edge and kept duplicates differ)
     Y: int = 0
     S: int | None = None
     o2: bool = False
@@ -134,7 +135,7 @@ def read_switches(s: str) -> Switches:
             i += 1
         elif ch == "Y":
             o.Y += 1
-        elif ch in "prDuAcj":
+        elif ch in "prDuAcji":
             setattr(o, ch, True)
     if o.r or not o.p:
         o.A = False

@@ -10,7 +10,7 @@ import numpy as np
 
 from ..state import MeshState
 from ..switches import Options
-from .infect import infect_hull, locate_points, plague, spread_regions
+from .infect import infect_hull, locate_points, plague, spread_regions, start_hull_edge
 
 
 def carve(ms: MeshState, o: Options, holes: np.ndarray | None, regions: np.ndarray | None, xy_in: np.ndarray) -> None:
@@ -21,9 +21,10 @@ def carve(ms: MeshState, o: Options, holes: np.ndarray | None, regions: np.ndarr
     lo = xy_in.min(axis=0)
     hi = xy_in.max(axis=0)
     found_regions = None
+    start = start_hull_edge(m, o.i)  # hole and region points must lie strictly left of its line
     if regions is not None and len(regions):
         found_regions = np.zeros((len(regions), 2), dtype=np.int64)
-        locate_points(m, np.ascontiguousarray(regions[:, :2]), lo, hi, found_regions)
+        locate_points(m, np.ascontiguousarray(regions[:, :2]), lo, hi, found_regions, start)
     queue = np.zeros(slots, dtype=np.int64)
     tflag = np.asarray(m.tflag)
     n = 0
@@ -31,7 +32,7 @@ def carve(ms: MeshState, o: Options, holes: np.ndarray | None, regions: np.ndarr
         n = infect_hull(m, ms.segs, queue)
     if holes is not None and len(holes) and not o.O:
         found = np.zeros((len(holes), 2), dtype=np.int64)
-        locate_points(m, np.ascontiguousarray(holes), lo, hi, found)
+        locate_points(m, np.ascontiguousarray(holes), lo, hi, found, start)
         for t in found[found[:, 0] >= 0, 0]:
             if not tflag[t]:
                 tflag[t] = 1

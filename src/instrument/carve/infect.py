@@ -18,6 +18,7 @@ from __future__ import annotations
 import cython
 from cython.cimports.instrument.core.locate import LOC_INSIDE, LOC_ON_EDGE, LOC_ON_VERTEX, walk
 from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, Index, Mesh, kill_triangle, lnext, lprev
+from cython.cimports.instrument.core.predicates import orient2d
 from cython.cimports.instrument.core.subsegments import Subsegments
 from cython.cimports.instrument.counters import C_DELETED
 
@@ -69,6 +70,31 @@ def _first_hull_edge(m: Mesh) -> Index:
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
+def start_hull_edge(m: Mesh, incremental: cython.bint) -> Index:
+    """The hull edge from which Triangle starts locating hole and region
+    points (the one its outer-space triangle points at), or NO_EDGE.
+
+    After divide and conquer it is the edge leaving the hull vertex with
+    the least (x, y), counter-clockwise.  After incremental insertion it is,
+    observed on the `triangle` package, the hull edge arriving at input
+    vertex 0 when that vertex is on the hull; otherwise (no rule was found)
+    the divide-and-conquer one.  Only points strictly left of its line are
+    located, so a hole point on that edge's line is ignored."""
+    e: Index
+    if incremental:
+        for t in range(m.nslot):
+            if m.stamp[t] <= 0:
+                continue
+            for k in range(3):
+                e = 3 * t + k
+                if m.twin[e] == NO_EDGE and m.corner[lprev(e)] == 0:
+                    return e
+    return _first_hull_edge(m)
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
 def infect_hull(m: Mesh, segs: Subsegments, queue: cython.longlong[::1]) -> Index:
     """Walk the convex hull counter-clockwise from the edge leaving its
     lowest vertex (least x, then y), as Triangle does: a triangle on a hull
@@ -103,11 +129,14 @@ def infect_hull(m: Mesh, segs: Subsegments, queue: cython.longlong[::1]) -> Inde
 @cython.nogil
 @cython.exceptval(check=False)
 def locate_points(
-    m: Mesh, pts: cython.double[:, ::1], lo: cython.double[::1], hi: cython.double[::1], found: cython.longlong[:, ::1]
+    m: Mesh, pts: cython.double[:, ::1], lo: cython.double[::1], hi: cython.double[::1], found: cython.longlong[:, ::1],
+    start: Index,
 ) -> cython.void:
-    """For each point inside the box ``lo..hi``: the triangle holding it
-    (``found[i, 0]``) and that triangle's stamp (``found[i, 1]``); -1 if it is
-    outside the box or the mesh."""
+    """For each point inside the box ``lo..hi`` and strictly left of the
+    line of hull edge ``start`` (``start_hull_edge``; NO_EDGE: no such
+    test), as Triangle locates hole and region points: the triangle holding
+    it (``found[i, 0]``) and that triangle's stamp (``found[i, 1]``); -1
+    otherwise, or if it is outside the mesh."""
     t0: Index = m.nslot - 1
     while t0 >= 0 and m.stamp[t0] <= 0:
         t0 -= 1
@@ -121,6 +150,11 @@ def locate_points(
         x = pts[i, 0]
         y = pts[i, 1]
         if t0 < 0 or not (lo[0] <= x <= hi[0] and lo[1] <= y <= hi[1]):
+            continue
+        if start != NO_EDGE and orient2d(
+            m.xy[m.corner[lnext(start)], 0], m.xy[m.corner[lnext(start)], 1],
+            m.xy[m.corner[lprev(start)], 0], m.xy[m.corner[lprev(start)], 1], x, y,
+        ) <= 0.0:
             continue
         status, e = walk(m, t0, x, y, 4 * m.stamp.shape[0] + 64)
         if status == LOC_INSIDE or status == LOC_ON_EDGE or status == LOC_ON_VERTEX:

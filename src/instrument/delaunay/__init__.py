@@ -118,9 +118,18 @@ def _incremental(xy, work, seed, extra_vertices, extra_triangles, tables) -> tup
         dup[order[copies]] = order[found[copies]]
     else:
         np.asarray(m.xy)[:n] = xy
+        dup[:] = _copies(xy)  # no walk found them, but -j and the warnings still need them
+        work[C_DUPLICATE] += int((dup >= 0).sum())
     m.rng = 12345  # the later stages' walks start their own sequence, as before this stage had one
     _keep_lowest_copy(m, dup)
     return m, dup
+
+
+def _copies(xy: np.ndarray) -> np.ndarray:
+    """Per row: -1, or the lowest index of an earlier row with the same coordinates."""
+    _, first, inverse = np.unique(xy, axis=0, return_index=True, return_inverse=True)
+    keeper = first[inverse.reshape(-1)]
+    return np.where(keeper == np.arange(len(xy)), -1, keeper).astype(np.int64)
 
 
 def _keep_lowest_copy(m: Mesh, dup: np.ndarray) -> None:

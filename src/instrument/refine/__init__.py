@@ -80,14 +80,14 @@ def run(
     thousand splits)."""
     if steiner not in STEINER:
         raise ValueError(f"steiner must be one of {', '.join(STEINER)}, not {steiner!r}")
-    if o.S == 0:
+    if steiner_budget(ms, o) == 0:
         return np.zeros(0, dtype=TRACE_DTYPE) if trace else None
     user = triunsuitable if o.u else None
     domain = _domain_area(ms)
     bound = _smallest_area_bound(ms, o)
     if max_vertices is None:
         n_input = ms.n_input + ms.segs.count
-        limit = limits.vertex_limit(n_input=n_input, domain_area=domain, area_bound=bound, steiner_budget=o.S)
+        limit = limits.vertex_limit(n_input=n_input, domain_area=domain, area_bound=bound, steiner_budget=steiner_budget(ms, o))
     else:
         limit = int(max_vertices)
     why = limits.explain(max_vertices is None)
@@ -126,6 +126,18 @@ def run(
     return _trace_table(np.asarray(r.trace)[: r.ntrace]) if trace else None
 
 
+def steiner_budget(ms: MeshState, o: Options) -> int:
+    """The Steiner points refinement may still add under ``-S`` (-1: no limit).
+
+    The vertices segment recovery made where segments cross use up the
+    budget, as in Triangle (pa0.0086S5 on a five-pointed star: its five
+    crossings leave nothing for refinement, and S3 leaves nothing either:
+    the crossings are never refused, the budget just stops at 0)."""
+    if o.S < 0:
+        return -1
+    return max(0, o.S - (ms.mesh.nvert - ms.n_input))
+
+
 def new_refiner(ms: MeshState, o: Options, strategy: str, steiner: str, trace: bool, python_test: bool = False) -> Refiner:
     """The refinement kernel's state for mesh ``ms`` under switches ``o``:
     the queues empty (``tally_encroached`` and ``finish`` fill them).
@@ -136,7 +148,7 @@ def new_refiner(ms: MeshState, o: Options, strategy: str, steiner: str, trace: b
     slots = m.triangle_capacity
     cfg = Config(o, strategy_id(strategy), steiner == "offcenter", python_test)
     return Refiner(
-        cfg, budget=o.S, slots=slots, queue=slots + 16, records=2 * ms.segs.count + 64, trace=trace  # room for every subsegment
+        cfg, budget=steiner_budget(ms, o), slots=slots, queue=slots + 16, records=2 * ms.segs.count + 64, trace=trace  # room for every subsegment
     )
 
 
