@@ -48,6 +48,10 @@ from .runners import Outcome
 #: what the engine may raise on input it cannot mesh (class names; the
 #: engine's SwitchError is a ValueError, its PrecisionError a RuntimeError)
 ALLOWED_ERRORS = frozenset({"ValueError", "SwitchError", "RuntimeError", "PrecisionError"})
+#: the engine's own error (TriangleError: a ValueError and a RuntimeError, as
+#: the triangle package's users catch either) and everything derived from it
+#: (SwitchError, PrecisionError, SizeLimitError) is a clear error too
+ENGINE_ERROR = "TriangleError"
 AREA_RTOL = 1e-9
 SIZE_SLACK = (0.02, 3)
 SPREAD_SLACK = (0.01, 2)
@@ -437,7 +441,8 @@ def _judge(case: Case, tri: Outcome, ours: Outcome, spread) -> Verdict:
         v.fail(f"ours-{ours.status}", "", f"ours: {ours.message}; Triangle: {tri.summary()}")
         return v
     if ours.status == "error":
-        if ours.exc_type not in ALLOWED_ERRORS or not ours.message.strip():
+        allowed = ours.exc_type in ALLOWED_ERRORS or ENGINE_ERROR in ours.exc_mro
+        if not allowed or not ours.message.strip():
             v.fail("ours-exception", ours.exc_type, f"ours raises {ours.exc_type}: {ours.message}\n{ours.traceback}")
         elif t_ok and (n_rows(tri.result, "triangles") or ordinary_scale(case.input)):
             # at extreme scales an empty answer of Triangle's is no better than a clear error
