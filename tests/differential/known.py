@@ -101,21 +101,6 @@ DEFECTS = [
         lambda c, f, n: f.signature == "ours-exception:ZeroDivisionError" and not tiny(c) and read_switches(c.switches).q,
     ),
     Defect(
-        "huge-coordinates",
-        "at ~2^512 ours' geometry breaks: segments are not recovered (RuntimeError where Triangle meshes), or are "
-        "bent through a vertex off them (the unit square's centre under p: half the square silently lost)",
-        lambda c, f, n: huge(c) and f.kind in ("ours-error-where-triangle-meshes", "phantom-segment", "dropped-vertex",
-                                              "boundary-not-segment", "area-total", "invalid-mesh"),
-    ),
-    Defect(
-        "collinear-chain-p",
-        "nearly collinear segment chains under p: RuntimeError 'could not recover segment' where Triangle meshes, or "
-        "segments bent through nearby vertices (phantom segments, uneaten triangles)",
-        lambda c, f, n: not huge(c) and nearly_collinear(c) and f.kind in (
-            "ours-error-where-triangle-meshes", "phantom-segment", "invalid-mesh", "boundary-not-segment",
-            "area-total", "count", "markers", "dropped-vertex"),
-    ),
-    Defect(
         "duplicate-markers",
         "a duplicate vertex gets its twin's boundary marker (1); Triangle leaves duplicates at 0 (and on inputs "
         "without triangles, j keeps duplicates that Triangle jettisons)",
