@@ -96,24 +96,10 @@ def triangle_empty(notes: dict) -> bool:
 
 DEFECTS = [
     Defect(
-        "zero-division-star",
-        "ZeroDivisionError in refinement at ordinary scale (the 19-point star, step 6, under pq30)",
-        lambda c, f, n: f.signature == "ours-exception:ZeroDivisionError" and not tiny(c) and read_switches(c.switches).q,
-    ),
-    Defect(
-        "huge-coordinates",
-        "at ~2^512 ours' geometry breaks: segments are not recovered (RuntimeError where Triangle meshes), or are "
-        "bent through a vertex off them (the unit square's centre under p: half the square silently lost)",
-        lambda c, f, n: huge(c) and f.kind in ("ours-error-where-triangle-meshes", "phantom-segment", "dropped-vertex",
-                                              "boundary-not-segment", "area-total", "invalid-mesh"),
-    ),
-    Defect(
-        "collinear-chain-p",
-        "nearly collinear segment chains under p: RuntimeError 'could not recover segment' where Triangle meshes, or "
-        "segments bent through nearby vertices (phantom segments, uneaten triangles)",
-        lambda c, f, n: not huge(c) and nearly_collinear(c) and f.kind in (
-            "ours-error-where-triangle-meshes", "phantom-segment", "invalid-mesh", "boundary-not-segment",
-            "area-total", "count", "markers", "dropped-vertex"),
+        "star-size",
+        "self-intersecting stars under q: ours makes about twice Triangle's vertices (the 19-point star, step 6, "
+        "under pq30: 2388 against 1217; it raised ZeroDivisionError before the scaled quality test)",
+        lambda c, f, n: f.kind == "size" and c.family == "star" and read_switches(c.switches).q,
     ),
     Defect(
         "duplicate-copy",

@@ -196,7 +196,7 @@ def leaves_mesh(m: Mesh, a: Index, b: Index) -> cython.bint:
         e0 = vertex_edge(m, v)
         if e0 < 0:
             return True
-        e, where = turn_to(m, v, b, e0)
+        e, where = turn_to(m, v, b, e0, 0, -1, -1)  # every vertex may be rounded
         if e < 0:
             return True  # the ray leaves v outside its triangles
         if where == 1:

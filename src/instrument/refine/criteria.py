@@ -17,6 +17,8 @@ import cython
 from cython.cimports.instrument.core.mesh import NO_SEG, V_SEGMENT, Index, Mesh, lnext, lprev, next_random
 from cython.cimports.instrument.core.navigate import edge_around, origin_edge
 from cython.cimports.instrument.core.predicates import orient2d
+from cython.cimports.instrument.core.scaling import unit_scale
+from cython.cimports.libc.math import fabs
 from cython.cimports.instrument.core.subsegments import Subsegments
 from cython.cimports.instrument.refine.cavity import collect_cavity, forget_cavity, inherited
 from cython.cimports.instrument.refine.encroach import check_subsegment
@@ -30,13 +32,74 @@ _INF = cython.declare(cython.double, float("inf"))
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
+def _shape_scaled(
+    bcx: cython.double, bcy: cython.double, cax: cython.double, cay: cython.double, abx: cython.double,
+    aby: cython.double, a: Index, b: Index, c: Index, f: cython.double,
+) -> tuple[cython.double, cython.double, cython.double, cython.double, Index, Index]:
+    """``_shape`` from the edge vectors (b - c, c - a, a - b) scaled by the
+    power of two ``f``; the results in the mesh's units."""
+    bcx *= f
+    bcy *= f
+    cax *= f
+    cay *= f
+    abx *= f
+    aby *= f
+    la: cython.double = bcx * bcx + bcy * bcy
+    lb: cython.double = cax * cax + cay * cay
+    lc: cython.double = abx * abx + aby * aby
+    u: Index
+    v: Index
+    mn: cython.double
+    l1: cython.double
+    l2: cython.double
+    dot: cython.double
+    if lc < la and lc < lb:  # shortest a-b, smallest angle at c: vectors c->a, c->b
+        u, v, mn, l1, l2 = a, b, lc, la, lb
+        dot = -(cax * bcx + cay * bcy)
+    elif la < lb:  # smallest angle at a: a->b, a->c
+        u, v, mn, l1, l2 = b, c, la, lb, lc
+        dot = -(abx * cax + aby * cay)
+    else:  # smallest angle at b: b->c, b->a
+        u, v, mn, l1, l2 = c, a, lb, lc, la
+        dot = -(bcx * abx + bcy * aby)
+    cos2: cython.double = dot * dot / (l1 * l2)
+    if dot < 0.0:
+        cos2 = -cos2
+    area2: cython.double = aby * cax - abx * cay  # (b - a) x (c - a)
+    circ2: cython.double = la * lb * lc / (area2 * area2) / 4.0 if area2 != 0.0 else _INF
+    g: cython.double = 1.0 / (f * f) if f <= 2.0**511 and f >= 2.0**-511 else 0.0
+    if g == 0.0:  # 1/f^2 is no double: scale back in two steps
+        return mn / f / f, cos2, area2 / f / f, circ2 / f / f, u, v
+    return mn * g, cos2, area2 * g, circ2 * g, u, v
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
 def _shape(m: Mesh, a: Index, b: Index, c: Index) -> tuple[cython.double, cython.double, cython.double, cython.double, Index, Index]:
     """Squared shortest edge, cos^2 of the smallest angle, twice the area,
-    squared circumradius, and the shortest edge's end vertices."""
+    squared circumradius, and the shortest edge's end vertices.
+
+    cos^2 is of degree 4 over degree 4 and the circumradius of degree 6 over
+    4: with edges beyond about 2^160 or below 2^-160 the products overflow
+    or leave the normal range (at 2^300 every triangle looked perfect, and
+    meshes kept 26-degree angles under q30).  There the edge vectors are
+    scaled by an exact power of two first (``unit_scale``), the degree-0
+    cos^2 is used as it is and the rest is scaled back; in range nothing
+    changes."""
     xy = m.xy
-    la: cython.double = (xy[b, 0] - xy[c, 0]) * (xy[b, 0] - xy[c, 0]) + (xy[b, 1] - xy[c, 1]) * (xy[b, 1] - xy[c, 1])  # opposite a
-    lb: cython.double = (xy[c, 0] - xy[a, 0]) * (xy[c, 0] - xy[a, 0]) + (xy[c, 1] - xy[a, 1]) * (xy[c, 1] - xy[a, 1])
-    lc: cython.double = (xy[a, 0] - xy[b, 0]) * (xy[a, 0] - xy[b, 0]) + (xy[a, 1] - xy[b, 1]) * (xy[a, 1] - xy[b, 1])
+    bcx: cython.double = xy[b, 0] - xy[c, 0]
+    bcy: cython.double = xy[b, 1] - xy[c, 1]
+    cax: cython.double = xy[c, 0] - xy[a, 0]
+    cay: cython.double = xy[c, 1] - xy[a, 1]
+    abx: cython.double = xy[a, 0] - xy[b, 0]
+    aby: cython.double = xy[a, 1] - xy[b, 1]
+    big: cython.double = max(max(max(fabs(bcx), fabs(bcy)), max(fabs(cax), fabs(cay))), max(fabs(abx), fabs(aby)))
+    if not (big <= 2.0**160 and big >= 2.0**-160):
+        return _shape_scaled(bcx, bcy, cax, cay, abx, aby, a, b, c, unit_scale(big))
+    la: cython.double = bcx * bcx + bcy * bcy  # opposite a
+    lb: cython.double = cax * cax + cay * cay
+    lc: cython.double = abx * abx + aby * aby
     q: Index
     u: Index
     v: Index
@@ -144,10 +207,31 @@ def steiner_point(r: Refiner, m: Mesh, h: Index) -> tuple[cython.double, cython.
     ydo: cython.double = xy[d, 1] - oy
     xao: cython.double = xy[a, 0] - ox
     yao: cython.double = xy[a, 1] - oy
+    xda: cython.double = xy[d, 0] - xy[a, 0]
+    yda: cython.double = xy[d, 1] - xy[a, 1]
+    # The circumcenter is of degree 3 over 2: with edges beyond 2^160 or
+    # below 2^-160 its products overflow or leave the normal range.  There
+    # the edge vectors are scaled by an exact power of two f (identical
+    # roundings, as no product leaves the range then) and the offset
+    # scaled back at the end; in range f is 1 and nothing changes.
+    f: cython.double = 1.0
+    big: cython.double = max(max(fabs(xdo), fabs(ydo)), max(fabs(xao), fabs(yao)))
+    if not (big <= 2.0**160 and big >= 2.0**-160) and big > 0.0:
+        f = unit_scale(big)
+        xdo *= f
+        ydo *= f
+        xao *= f
+        yao *= f
+        xda *= f
+        yda *= f
     dodist: cython.double = xdo * xdo + ydo * ydo
     aodist: cython.double = xao * xao + yao * yao
-    dadist: cython.double = (xy[d, 0] - xy[a, 0]) * (xy[d, 0] - xy[a, 0]) + (xy[d, 1] - xy[a, 1]) * (xy[d, 1] - xy[a, 1])
-    denom: cython.double = 0.5 / orient2d(xy[d, 0], xy[d, 1], xy[a, 0], xy[a, 1], ox, oy)
+    dadist: cython.double = xda * xda + yda * yda
+    denom: cython.double
+    if f == 1.0:
+        denom = 0.5 / orient2d(xy[d, 0], xy[d, 1], xy[a, 0], xy[a, 1], ox, oy)
+    else:
+        denom = 0.5 / orient2d(xdo, ydo, xao, yao, 0.0, 0.0)
     dx: cython.double = (yao * dodist - ydo * aodist) * denom
     dy: cython.double = (xdo * aodist - xao * dodist) * denom
     off: cython.bint = False
@@ -168,14 +252,17 @@ def steiner_point(r: Refiner, m: Mesh, h: Index) -> tuple[cython.double, cython.
             if fx * fx + fy * fy < dx * dx + dy * dy:
                 dx, dy, off = fx, fy, True
         else:
-            ex = xy[a, 0] - xy[d, 0]
-            ey = xy[a, 1] - xy[d, 1]
+            ex = -xda
+            ey = -yda
             fx = 0.5 * ex - c * ey
             fy = 0.5 * ey + c * ex
             if fx * fx + fy * fy < (dx - xdo) * (dx - xdo) + (dy - ydo) * (dy - ydo):
                 dx, dy, off = xdo + fx, ydo + fy, True
     xi: cython.double = (yao * dx - xao * dy) * (2.0 * denom)
     eta: cython.double = (xdo * dy - ydo * dx) * (2.0 * denom)
+    if f != 1.0:
+        dx = dx / f
+        dy = dy / f
     return ox + dx, oy + dy, xi, eta, off
 
 

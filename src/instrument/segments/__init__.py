@@ -50,11 +50,14 @@ def recover_segments(ms: MeshState, rows: np.ndarray, seg_markers: np.ndarray) -
     """Insert the segments ``rows`` (from ``clean_segments``) in input order."""
     m = ms.mesh
     m.add_constraint_tables()
-    if rows.shape[0] == 0 or m.nslot == 0:
+    if rows.shape[0] == 0 or m.nlive == 0:
+        # no triangle (fewer than three vertices, or all of them exactly
+        # collinear): there is no edge to make a segment of, and Triangle
+        # outputs the vertices alone, without segments
         return
     rows, in_marker = merge_duplicates(rows, np.asarray(seg_markers, dtype=np.int32))
     build_vertex_edges(m)
-    work = Recovery(rows, in_marker, 4 * (m.nvert + 64))
+    work = Recovery(rows, in_marker, 4 * (m.nvert + 64), plain=m.nvert)
     # every pair of segments crosses at most once
     most_vertices = m.nvert + rows.shape[0] * (rows.shape[0] + 1) // 2
     while True:

@@ -9,8 +9,12 @@ cdef class Recovery:
     cdef public long long[::1] buf         # scratch: crossed edges, flip stack
     cdef public Index handled              # pieces handled so far
     cdef public Index inputs               # input segments
+    cdef public Index plain                # vertices below it are input vertices (exact)
+    cdef public long long[:, ::1] ends     # each input segment's endpoints (-1: none)
 
-cpdef (Index, int) turn_to(Mesh m, Index a, Index b, Index e0) noexcept nogil
+cpdef (Index, int) turn_to(Mesh m, Index a, Index b, Index e0, Index plain, Index sa, Index sb) noexcept nogil
+cpdef double crossing_parameter(double ax, double ay, double bx, double by,
+                                double rx, double ry, double lx, double ly) noexcept nogil
 cpdef void mark_subsegment(Mesh m, Subsegments segs, Index e, int marker, int source) noexcept nogil
 cpdef bint restore_delaunay(Mesh m, long long[::1] stack) noexcept nogil
 cpdef int insert_segments(Mesh m, Subsegments segs, Recovery work) noexcept nogil

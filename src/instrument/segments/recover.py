@@ -42,6 +42,7 @@ from cython.cimports.instrument.core.locate import LOC_INSIDE, LOC_ON_EDGE, LOC_
 from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, Index, Mesh, lnext, lprev, set_parent, spare_triangles
 from cython.cimports.instrument.core.navigate import find_edge, remember_corners, vertex_edge
 from cython.cimports.instrument.core.predicates import orient2d
+from cython.cimports.instrument.core.scaling import unit_scale
 from cython.cimports.instrument.core.status import DONE, FAILED, NEED_BUFFER, NEED_ROOM
 from cython.cimports.instrument.core.subsegments import Subsegments, new_record
 from cython.cimports.instrument.counters import C_ORIENT, C_STEINER
@@ -61,10 +62,15 @@ class Recovery:
     pieces (a, b, input segment; the top is next), the input segments'
     markers, a scratch buffer, and a count of pieces handled against a bound
     (rounded crossing points that re-route each other must not loop for
-    ever)."""
+    ever).  Vertices from ``plain`` on are crossing vertices (rounded);
+    ``ends`` holds each input segment's two endpoints."""
 
-    def __init__(self, rows, markers, buffer: int):
+    def __init__(self, rows, markers, buffer: int, plain: int = 0):
         rows = np.asarray(rows, dtype=np.int64).reshape(-1, 3)
+        self.plain = plain
+        ends = np.full((int(rows[:, 2].max()) + 1 if rows.shape[0] else 1, 2), -1, dtype=np.int64)
+        ends[rows[:, 2]] = rows[:, :2]
+        self.ends = ends
         self.pieces = np.zeros((rows.shape[0] + 64, 3), dtype=np.int64)
         np.asarray(self.pieces)[: rows.shape[0]] = rows[::-1]
         self.top = rows.shape[0]
@@ -119,15 +125,73 @@ def mark_subsegment(m: Mesh, segs: Subsegments, e: Index, marker: cython.int, so
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
-def _side(ax: cython.double, ay: cython.double, bx: cython.double, by: cython.double, px: cython.double, py: cython.double) -> cython.double:
-    """orient2d of p against the line a -> b, but 0 for a point within a few
-    units in the last place of the line: a rounded crossing vertex starts
-    pieces that are off their segment's line by that much, and the input
-    vertices on the segment must still end those pieces."""
-    s: cython.double = orient2d(ax, ay, bx, by, px, py)
+def _within_rounding(
+    ax: cython.double, ay: cython.double, bx: cython.double, by: cython.double, px: cython.double, py: cython.double,
+    s: cython.double,
+) -> cython.bint:
+    """Is ``p``, whose exact orientation against the line a -> b is ``s``,
+    within a few units in the last place of that line?  The tolerance is
+    relative to the coordinates and to the length of ``a b``; where those
+    magnitudes could overflow or underflow its products (squared lengths
+    pass DBL_MAX near 2^512) the test runs on the points scaled by an exact
+    power of two, which leaves the comparison's outcome as it is in exact
+    arithmetic."""
+    mx: cython.double = max(max(fabs(ax), fabs(ay)), max(fabs(bx), fabs(by)))
+    f: cython.double
+    if not (mx <= 2.0**240 and mx >= 2.0**-240):
+        f = unit_scale(mx)
+        ax *= f
+        ay *= f
+        bx *= f
+        by *= f
+        px *= f
+        py *= f
+        s = orient2d(ax, ay, bx, by, px, py)
     length: cython.double = sqrt((bx - ax) * (bx - ax) + (by - ay) * (by - ay))
     tol: cython.double = 2.0**-48 * (fabs(ax) + fabs(ay) + fabs(bx) + fabs(by))
-    return 0.0 if fabs(s) <= tol * length else s
+    return fabs(s) <= tol * length
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _side(m: Mesh, a: Index, b: Index, y: Index, plain: Index, sa: Index, sb: Index) -> cython.double:
+    """orient2d of vertex ``y`` against the piece a -> b, but 0 for a point
+    the piece must end at although rounding put it a few units in the last
+    place off the piece's line.
+
+    Vertices below ``plain`` are the input's: their coordinates are exact,
+    so the tolerance applies only where a crossing vertex (``plain`` or
+    above, its coordinates rounded) is involved.  A rounded crossing vertex
+    starts pieces that are off their segment's line, and the input vertices
+    exactly on that segment (``sa -> sb``, when ``sa >= 0``) must still end
+    them; an input vertex merely near the line must not (it would bend the
+    segment through itself: a vertex 2^-126 of a side's length off a side
+    of a square did, under a tolerance relative to the coordinates alone).
+    A crossing vertex near the line of another segment through the same
+    point is taken to be on it, or later segments would cross again a
+    rounding error away."""
+    xy = m.xy
+    ax: cython.double = xy[a, 0]
+    ay: cython.double = xy[a, 1]
+    bx: cython.double = xy[b, 0]
+    by: cython.double = xy[b, 1]
+    px: cython.double = xy[y, 0]
+    py: cython.double = xy[y, 1]
+    s: cython.double = orient2d(ax, ay, bx, by, px, py)
+    if s == 0.0:
+        return s
+    if a < plain and b < plain and y < plain:
+        return s  # exact input: the exact sign
+    if not _within_rounding(ax, ay, bx, by, px, py, s):
+        return s
+    if y >= plain or sa < 0:
+        return 0.0
+    # an input vertex: on the piece only if exactly on its input segment
+    m.work[C_ORIENT] += 1
+    if orient2d(xy[sa, 0], xy[sa, 1], xy[sb, 0], xy[sb, 1], px, py) == 0.0:
+        return 0.0
+    return s
 
 
 @cython.cfunc
@@ -138,29 +202,35 @@ def _ahead(xy: cython.double[:, ::1], a: Index, b: Index, v: Index) -> cython.bi
     ``b`` or between ``a`` and ``b``?  A vertex past ``b`` (or behind ``a``)
     is not on the segment: with the tolerance it can look collinear while
     both ``a b`` and ``a v`` are edges (the guitar outline: taking it marked
-    an edge that is no segment and left the segment's own edge unmarked)."""
+    an edge that is no segment and left the segment's own edge unmarked).
+    Compared along the line's dominant axis, with no arithmetic that could
+    overflow (a dot product of differences near 2^512 does)."""
     if v == b:
         return True
-    dot: cython.double = (xy[v, 0] - xy[a, 0]) * (xy[b, 0] - xy[a, 0]) + (xy[v, 1] - xy[a, 1]) * (xy[b, 1] - xy[a, 1])
-    return 0.0 < dot < (xy[b, 0] - xy[a, 0]) * (xy[b, 0] - xy[a, 0]) + (xy[b, 1] - xy[a, 1]) * (xy[b, 1] - xy[a, 1])
+    ax: cython.double = xy[a, 0]
+    bx: cython.double = xy[b, 0]
+    vx: cython.double = xy[v, 0]
+    ay: cython.double = xy[a, 1]
+    by: cython.double = xy[b, 1]
+    vy: cython.double = xy[v, 1]
+    if fabs(0.5 * bx - 0.5 * ax) >= fabs(0.5 * by - 0.5 * ay):
+        return (ax < vx < bx) or (bx < vx < ax)
+    return (ay < vy < by) or (by < vy < ay)
 
 
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
-def turn_to(m: Mesh, a: Index, b: Index, e0: Index) -> tuple[Index, cython.int]:
+def turn_to(m: Mesh, a: Index, b: Index, e0: Index, plain: Index, sa: Index, sb: Index) -> tuple[Index, cython.int]:
     """Turn around ``a`` (from edge ``e0``, origin ``a``) to the edge ``e``
     (origin ``a``) whose triangle contains the start of the ray ``a -> b``.
 
     Returns ``(e, where)``: where = 0 if ``b`` is strictly inside the wedge
     (the ray crosses the edge opposite ``a``), 1 if ``dest(e)`` lies on the
     ray, 2 if ``apex(e)`` lies on the ray; (-1, -1) if no triangle is found.
+    "On the ray" is ``_side``'s: ``plain``, ``sa`` and ``sb`` as there.
     """
     xy = m.xy
-    ax: cython.double = xy[a, 0]
-    ay: cython.double = xy[a, 1]
-    bx: cython.double = xy[b, 0]
-    by: cython.double = xy[b, 1]
     e: Index
     d: Index
     x: Index
@@ -174,8 +244,8 @@ def turn_to(m: Mesh, a: Index, b: Index, e0: Index) -> tuple[Index, cython.int]:
             d = m.corner[lprev(e)]
             x = m.corner[e]
             m.work[C_ORIENT] += 2
-            od = -_side(ax, ay, bx, by, xy[d, 0], xy[d, 1])
-            ox = -_side(ax, ay, bx, by, xy[x, 0], xy[x, 1])
+            od = -_side(m, a, b, d, plain, sa, sb)
+            ox = -_side(m, a, b, x, plain, sa, sb)
             if od == 0.0 and _ahead(xy, a, b, d):
                 return e, 1
             if ox == 0.0 and _ahead(xy, a, b, x):
@@ -197,12 +267,14 @@ def turn_to(m: Mesh, a: Index, b: Index, e0: Index) -> tuple[Index, cython.int]:
 @cython.nogil
 @cython.exceptval(check=False)
 def _recover(
-    m: Mesh, segs: Subsegments, a: Index, b: Index, marker: cython.int, source: cython.int, buf: cython.longlong[::1]
+    m: Mesh, segs: Subsegments, a: Index, b: Index, marker: cython.int, source: cython.int, buf: cython.longlong[::1],
+    plain: Index, sa: Index, sb: Index,
 ) -> tuple[cython.int, Index, Index]:
     """Recover one piece ``a -> b`` of input segment ``source``.
 
     Returns ``(kind, v, e)`` with kind one of the ``_PIECE_*`` values:
     continue with ``v -> b``, or the walk met subsegment edge ``e``.
+    ``plain``, ``sa``, ``sb``: as for ``_side`` (the source's endpoints).
     """
     xy = m.xy
     e0: Index = vertex_edge(m, a)
@@ -210,7 +282,7 @@ def _recover(
         return _PIECE_FAILED, -1, -1
     e: Index
     where: cython.int
-    e, where = turn_to(m, a, b, e0)
+    e, where = turn_to(m, a, b, e0, plain, sa, sb)
     if e < 0:
         return _PIECE_FAILED, -1, -1
     d: Index
@@ -231,10 +303,6 @@ def _recover(
     stack: cython.longlong[::1] = buf[2 * n :]
     nq: Index = 0
     c: Index = lnext(e)  # the crossed edge, right -> left
-    ax: cython.double = xy[a, 0]
-    ay: cython.double = xy[a, 1]
-    bx: cython.double = xy[b, 0]
-    by: cython.double = xy[b, 1]
     end: Index = -1
     tw: Index
     y: Index
@@ -255,7 +323,7 @@ def _recover(
             s = 0.0
         else:
             m.work[C_ORIENT] += 1
-            s = _side(ax, ay, bx, by, xy[y, 0], xy[y, 1])
+            s = _side(m, a, b, y, plain, sa, sb)
         if s > 0.0:
             c = lnext(tw)
         elif s < 0.0:
@@ -405,6 +473,53 @@ def _near(xy: cython.double[:, ::1], v: Index, px: cython.double, py: cython.dou
     return fabs(xy[v, 0] - px) <= tol and fabs(xy[v, 1] - py) <= tol
 
 
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def crossing_parameter(
+    ax: cython.double, ay: cython.double, bx: cython.double, by: cython.double,
+    rx: cython.double, ry: cython.double, lx: cython.double, ly: cython.double,
+) -> cython.double:
+    """Where the line a -> b crosses the segment r -> l, as the parameter
+    t in [0, 1] along r -> l (0.5 if they are parallel).
+
+    t is a ratio of two cross products of coordinate differences, of degree
+    2: near 2^512 they overflow (inf / inf), and differences below about
+    2^-537 leave nothing above the subnormal range (0 / 0, or all bits
+    lost).  Where the differences are out of the safe range they are scaled
+    by an exact power of two first, which leaves the ratio unchanged."""
+    ex: cython.double = bx - ax
+    ey: cython.double = by - ay
+    tx: cython.double = lx - rx
+    ty: cython.double = ly - ry
+    wx: cython.double = rx - ax
+    wy: cython.double = ry - ay
+    mx: cython.double = max(max(max(fabs(ex), fabs(ey)), max(fabs(tx), fabs(ty))), max(fabs(wx), fabs(wy)))
+    f: cython.double
+    if not (mx <= 2.0**240 and mx >= 2.0**-240):
+        if not mx <= 1.7976931348623157e308:  # a difference overflowed: halve first
+            ex = 0.25 * bx - 0.25 * ax
+            ey = 0.25 * by - 0.25 * ay
+            tx = 0.25 * lx - 0.25 * rx
+            ty = 0.25 * ly - 0.25 * ry
+            wx = 0.25 * rx - 0.25 * ax
+            wy = 0.25 * ry - 0.25 * ay
+            mx = max(max(max(fabs(ex), fabs(ey)), max(fabs(tx), fabs(ty))), max(fabs(wx), fabs(wy)))
+        f = unit_scale(mx)
+        ex *= f
+        ey *= f
+        tx *= f
+        ty *= f
+        wx *= f
+        wy *= f
+    den: cython.double = ty * ex - tx * ey
+    t: cython.double = 0.5
+    if den != 0.0:
+        t = (ey * wx - ex * wy) / den
+        t = min(max(t, 0.0), 1.0)
+    return t
+
+
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
@@ -429,18 +544,15 @@ def _split_at_crossing(
     r: Index = m.seg[c]
     left: Index = m.corner[lprev(c)]
     right: Index = m.corner[lnext(c)]
-    # parameter along the crossed subsegment, right -> left
-    ex: cython.double = xy[b, 0] - xy[a, 0]
-    ey: cython.double = xy[b, 1] - xy[a, 1]
-    tx: cython.double = xy[left, 0] - xy[right, 0]
-    ty: cython.double = xy[left, 1] - xy[right, 1]
-    den: cython.double = ty * ex - tx * ey
-    t: cython.double = 0.5
-    if den != 0.0:
-        t = (ey * (xy[right, 0] - xy[a, 0]) - ex * (xy[right, 1] - xy[a, 1])) / den
-        t = min(max(t, 0.0), 1.0)
-    px: cython.double = xy[right, 0] + t * tx
-    py: cython.double = xy[right, 1] + t * ty
+    t: cython.double = crossing_parameter(
+        xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[right, 0], xy[right, 1], xy[left, 0], xy[left, 1]
+    )
+    px: cython.double = xy[right, 0] + t * (xy[left, 0] - xy[right, 0])
+    py: cython.double = xy[right, 1] + t * (xy[left, 1] - xy[right, 1])
+    if not (fabs(px) <= 1.7976931348623157e308 and fabs(py) <= 1.7976931348623157e308):
+        # the difference overflowed (coordinates of both signs near DBL_MAX)
+        px = (1.0 - t) * xy[right, 0] + t * xy[left, 0]
+        py = (1.0 - t) * xy[right, 1] + t * xy[left, 1]
     tol: cython.double = 2.0**-48 * (fabs(px) + fabs(py)) + 1e-300
     if _near(xy, right, px, py, tol):
         return right, False
@@ -501,6 +613,9 @@ def insert_segments(m: Mesh, segs: Subsegments, work: Recovery) -> cython.int:
     """
     pieces: cython.longlong[:, ::1] = work.pieces
     buf: cython.longlong[::1] = work.buf
+    ends: cython.longlong[:, ::1] = work.ends
+    sa: Index
+    sb: Index
     sp: Index
     a: Index
     b: Index
@@ -531,7 +646,12 @@ def insert_segments(m: Mesh, segs: Subsegments, work: Recovery) -> cython.int:
         b = pieces[sp, 1]
         src = pieces[sp, 2]
         marker = 1 if src < 0 else work.markers[src]  # -c hull segments have no input row
-        kind, v, c = _recover(m, segs, a, b, marker, cython.cast(cython.int, src), buf)
+        sa = -1
+        sb = -1
+        if 0 <= src < ends.shape[0]:
+            sa = ends[src, 0]
+            sb = ends[src, 1]
+        kind, v, c = _recover(m, segs, a, b, marker, cython.cast(cython.int, src), buf, work.plain, sa, sb)
         if kind == _PIECE_DONE:
             work.top = sp
         elif kind == _PIECE_CONTINUES:

@@ -1,0 +1,54 @@
+# cython: language_level=3
+"""Exact rescaling by powers of two, for the kernels' non-predicate arithmetic.
+
+The predicates are exact for any finite coordinates, but lengths, areas,
+circumcentres and crossing points are plain floating point: squared lengths
+overflow once coordinates pass about 2^511 (1e154) and lose every bit below
+about 2^-537 (1e-162), where products fall under the subnormal range.  A
+kernel that meets such magnitudes (a cheap range test first, so ordinary
+inputs pay nothing) multiplies its operands by ``unit_scale(m)``, a power of
+two that brings the largest magnitude ``m`` into [0.5, 1): the scaling is
+exact (barring subnormal operands, which only gain bits), every ratio and
+sign it computes is unchanged, and a point computed in scaled coordinates is
+mapped back exactly by dividing by the same power of two.
+"""
+
+from __future__ import annotations
+
+import math
+
+import cython
+from cython.cimports.libc.math import frexp, ldexp
+
+#: magnitudes in [SAFE_LOW, SAFE_HIGH] can be squared and multiplied by one
+#: another (degree 4 at most) without overflow or underflow to subnormals
+SAFE_LOW = 2.0**-240
+SAFE_HIGH = 2.0**240
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def unit_scale(m: cython.double) -> cython.double:
+    """The power of two f with ``m * f`` in [0.5, 1) (1 for 0, infinity or
+    NaN); at most 2^1000, so for subnormal m ``m * f`` is only at least
+    2^-74 (a factor above 2^1023 is not a double)."""
+    if not (m > 0.0 and m <= 1.7976931348623157e308):
+        return 1.0
+    e: cython.int = 0
+    if cython.compiled:
+        frexp(m, cython.address(e))
+    else:
+        e = math.frexp(m)[1]
+    if e < -1000:
+        e = -1000
+    return ldexp(1.0, -e) if cython.compiled else math.ldexp(1.0, -e)
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def in_safe_range(m: cython.double) -> cython.bint:
+    """Is the magnitude ``m`` (a largest |coordinate| or |difference|, or 0)
+    in the range where the kernels' products need no rescaling?"""
+    return m == 0.0 or (m >= 2.0**-240 and m <= 2.0**240)
