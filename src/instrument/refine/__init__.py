@@ -203,12 +203,22 @@ class _Guard:
 
 
 def _domain_area(ms: MeshState) -> float:
-    """The area the mesh covers (its live triangles)."""
-    from ..check import mesh_area  # only here: the command's start-up does not need the checker
-
+    """The area the mesh covers (its live triangles), for the size limit:
+    summed on coordinates scaled by a power of two (exact) so that no
+    product overflows or underflows at any finite scale; inf when the area
+    itself is beyond the largest double (near 2^1024 per side)."""
     m = ms.mesh
-    corner = np.asarray(m.corner).reshape(-1, 3)
-    return mesh_area({"vertices": np.asarray(m.xy), "triangles": corner[m.live_triangles()]})
+    corner = np.asarray(m.corner).reshape(-1, 3)[m.live_triangles()]
+    if corner.shape[0] == 0:
+        return 0.0
+    xy = np.asarray(m.xy)[: m.nvert]
+    shift = int(np.frexp(np.abs(xy).max())[1])
+    p = np.ldexp(xy, -shift)[corner]
+    u = p[:, 1] - p[:, 0]
+    w = p[:, 2] - p[:, 0]
+    area = 0.5 * float(np.sum(u[:, 0] * w[:, 1] - u[:, 1] * w[:, 0]))
+    with np.errstate(over="ignore"):
+        return float(np.ldexp(area, 2 * shift))
 
 
 def _smallest_area_bound(ms: MeshState, o: Options) -> float | None:
