@@ -22,7 +22,7 @@ from .area import area_chunks, read_area
 from .edge import edge_chunks, read_edge
 from .ele import ele_chunks, read_ele
 from .info import Info
-from ._output import write_text
+from .writing import write_text
 from .neigh import neigh_chunks, read_neigh
 from .node import read_node, vertex_chunks
 from .off import off_chunks

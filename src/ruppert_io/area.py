@@ -17,8 +17,8 @@ from typing import Any
 
 import numpy as np
 
-from . import _output
-from ._lines import LineReader
+from . import writing
+from .lines import LineReader
 
 
 def read_area(
@@ -62,7 +62,7 @@ def read_area(
 
 def area_chunks(mesh: Mapping[str, Any], *, first_index: int = 1) -> list[str]:
     """The text of a .area file for ``mesh['triangle_max_area']``."""
-    areas = _output.get(mesh, "triangle_max_area", float, 1)
+    areas = writing.get(mesh, "triangle_max_area", float, 1)
     if areas is None:
         raise ValueError("the mesh has no 'triangle_max_area'")
     numbers = range(first_index, first_index + len(areas))
@@ -79,4 +79,4 @@ def write_area(
     generated_by: str | None = None,
 ) -> Path:
     """Write ``mesh['triangle_max_area']`` as a .area file."""
-    return _output.write_text(path, area_chunks(mesh, first_index=first_index), generated_by)
+    return writing.write_text(path, area_chunks(mesh, first_index=first_index), generated_by)

@@ -19,8 +19,8 @@ from typing import Any
 
 import numpy as np
 
-from . import _output
-from ._lines import INT32_MAX, INT32_MIN, Block, LineReader
+from . import writing
+from .lines import INT32_MAX, INT32_MIN, Block, LineReader
 from .info import Info
 
 
@@ -115,12 +115,12 @@ def edge_chunks(
 
     Edges whose second endpoint is -1 are written as rays with ``mesh['normals']``.
     """
-    edges = _output.get(mesh, "edges", int, 2)
+    edges = writing.get(mesh, "edges", int, 2)
     if edges is None:
         raise ValueError("the mesh has no 'edges'")
     e = len(edges)
-    marks = _output.get(mesh, "edge_markers", int, 1, rows=e) if markers else None
-    normals = _output.get(mesh, "normals", float, 2, rows=e)
+    marks = writing.get(mesh, "edge_markers", int, 1, rows=e) if markers else None
+    normals = writing.get(mesh, "normals", float, 2, rows=e)
     rays = edges[:, 1] == -1
     if rays.any() and normals is None:
         raise ValueError("'edges' has rays (-1) but the mesh has no 'normals'")
@@ -149,4 +149,4 @@ def write_edge(
 ) -> Path:
     """Write ``mesh['edges']`` (with markers, and rays if any) as a .edge file."""
     chunks = edge_chunks(mesh, first_index=first_index, markers=markers)
-    return _output.write_text(path, chunks, generated_by)
+    return writing.write_text(path, chunks, generated_by)

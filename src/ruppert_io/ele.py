@@ -16,8 +16,8 @@ from typing import Any
 
 import numpy as np
 
-from . import _output
-from ._lines import Block, LineReader
+from . import writing
+from .lines import Block, LineReader
 
 
 def read_ele(
@@ -90,7 +90,7 @@ def _slow_ele(
 
 def ele_chunks(mesh: Mapping[str, Any], *, first_index: int = 1) -> list[str]:
     """The text of a .ele file for ``mesh['triangles']`` (and its attributes)."""
-    triangles = _output.get(mesh, "triangles", int)
+    triangles = writing.get(mesh, "triangles", int)
     if triangles is None:
         raise ValueError("the mesh has no 'triangles'")
     m, corners = triangles.shape
@@ -98,7 +98,7 @@ def ele_chunks(mesh: Mapping[str, Any], *, first_index: int = 1) -> list[str]:
         corners = 3
     if corners < 3:
         raise ValueError(f"'triangles' needs at least 3 columns, got {corners}")
-    attr = _output.get(mesh, "triangle_attributes", float, rows=m)
+    attr = writing.get(mesh, "triangle_attributes", float, rows=m)
     k = 0 if attr is None else attr.shape[1]
     # Triangle: "%ld  %d  %d\n", then "%4ld    %4d  %4d  %4d" (six %4d with -o2)
     # and "  %.17g" per attribute.
@@ -119,4 +119,4 @@ def write_ele(
     generated_by: str | None = None,
 ) -> Path:
     """Write ``mesh['triangles']`` (3 or 6 nodes each) as a .ele file."""
-    return _output.write_text(path, ele_chunks(mesh, first_index=first_index), generated_by)
+    return writing.write_text(path, ele_chunks(mesh, first_index=first_index), generated_by)

@@ -32,7 +32,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from . import _output, naming
+from . import naming, writing
 from .api import read_set, write
 from .errors import DimensionError
 
@@ -119,7 +119,7 @@ def to_meshio(mesh: Mapping[str, Any], *, pad_3d: bool = False) -> meshio.Mesh:
     order) block, segments a ``line`` block.  ``pad_3d`` adds z = 0, which VTU and
     most other writers want.
     """
-    xy = _output.get(mesh, "vertices", float, 2)
+    xy = writing.get(mesh, "vertices", float, 2)
     if xy is None:
         raise ValueError("the mesh has no 'vertices'")
     n = len(xy)
@@ -127,7 +127,7 @@ def to_meshio(mesh: Mapping[str, Any], *, pad_3d: bool = False) -> meshio.Mesh:
     blocks: list[tuple[str, np.ndarray]] = []
     # name -> {block type -> per-cell array}; other blocks get zeros
     per_block: dict[str, dict[str, np.ndarray]] = {}
-    triangles = _output.get(mesh, "triangles", int)
+    triangles = writing.get(mesh, "triangles", int)
     if triangles is not None and len(triangles):
         if triangles.shape[1] == 6:
             blocks.append(("triangle6", triangles[:, TRIANGLE6_TO_VTK]))
@@ -137,16 +137,16 @@ def to_meshio(mesh: Mapping[str, Any], *, pad_3d: bool = False) -> meshio.Mesh:
             raise ValueError(f"meshio has no {triangles.shape[1]}-node triangle")
         m = len(triangles)
         kind = blocks[-1][0]
-        attr = _output.get(mesh, "triangle_attributes", float, rows=m)
+        attr = writing.get(mesh, "triangle_attributes", float, rows=m)
         for j in range(0 if attr is None else attr.shape[1]):
             per_block[f"{PREFIX}attr{j + 1}"] = {kind: attr[:, j]}
-        area = _output.get(mesh, "triangle_max_area", float, 1, rows=m)
+        area = writing.get(mesh, "triangle_max_area", float, 1, rows=m)
         if area is not None:
             per_block[f"{PREFIX}max_area"] = {kind: area[:, 0]}
-    segments = _output.get(mesh, "segments", int, 2)
+    segments = writing.get(mesh, "segments", int, 2)
     if segments is not None and len(segments):
         blocks.append(("line", segments))
-        marks = _output.get(mesh, "segment_markers", int, 1, rows=len(segments))
+        marks = writing.get(mesh, "segment_markers", int, 1, rows=len(segments))
         if marks is not None:
             per_block[f"{PREFIX}marker"] = {"line": marks[:, 0]}
     cell_data = {
@@ -157,10 +157,10 @@ def to_meshio(mesh: Mapping[str, Any], *, pad_3d: bool = False) -> meshio.Mesh:
         for name, arrays in per_block.items()
     }
     point_data = {}
-    marks = _output.get(mesh, "vertex_markers", int, 1, rows=n)
+    marks = writing.get(mesh, "vertex_markers", int, 1, rows=n)
     if marks is not None:
         point_data[f"{PREFIX}marker"] = marks[:, 0]
-    attr = _output.get(mesh, "vertex_attributes", float, rows=n)
+    attr = writing.get(mesh, "vertex_attributes", float, rows=n)
     for j in range(0 if attr is None else attr.shape[1]):
         point_data[f"{PREFIX}attr{j + 1}"] = attr[:, j]
     import meshio

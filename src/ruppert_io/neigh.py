@@ -16,8 +16,8 @@ from typing import Any
 
 import numpy as np
 
-from . import _output
-from ._lines import LineReader
+from . import writing
+from .lines import LineReader
 from .info import Info
 
 
@@ -77,7 +77,7 @@ def read_neigh(
 
 def neigh_chunks(mesh: Mapping[str, Any], *, first_index: int = 1) -> list[str]:
     """The text of a .neigh file for ``mesh['neighbors']``."""
-    neighbors = _output.get(mesh, "neighbors", int, 3)
+    neighbors = writing.get(mesh, "neighbors", int, 3)
     if neighbors is None:
         raise ValueError("the mesh has no 'neighbors'")
     m = len(neighbors)
@@ -96,4 +96,4 @@ def write_neigh(
     generated_by: str | None = None,
 ) -> Path:
     """Write ``mesh['neighbors']`` as a .neigh file."""
-    return _output.write_text(path, neigh_chunks(mesh, first_index=first_index), generated_by)
+    return writing.write_text(path, neigh_chunks(mesh, first_index=first_index), generated_by)

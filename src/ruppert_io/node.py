@@ -17,8 +17,8 @@ from typing import Any
 
 import numpy as np
 
-from . import _output
-from ._lines import INT32_MAX, INT32_MIN, Block, Line, LineReader
+from . import writing
+from .lines import INT32_MAX, INT32_MIN, Block, Line, LineReader
 from .errors import DimensionError
 from .info import Info
 
@@ -161,13 +161,13 @@ def vertex_chunks(
     ``vertex_markers``.  ``header_markers`` overrides the header's marker field
     (the .v.node header always says 0).
     """
-    xy = _output.get(mesh, "vertices", float, 2)
+    xy = writing.get(mesh, "vertices", float, 2)
     if xy is None:
         raise ValueError("the mesh has no 'vertices'")
     n = len(xy)
-    attr = _output.get(mesh, "vertex_attributes", float, rows=n)
+    attr = writing.get(mesh, "vertex_attributes", float, rows=n)
     k = 0 if attr is None else attr.shape[1]
-    marks = _output.get(mesh, "vertex_markers", int, 1, rows=n) if markers else None
+    marks = writing.get(mesh, "vertex_markers", int, 1, rows=n) if markers else None
     has_marks = marks is not None
     flag = has_marks if header_markers is None else header_markers
     # Triangle: "%ld  %d  %d  %d\n", then "%4d    %.17g  %.17g", "  %.17g" per
@@ -193,4 +193,4 @@ def write_node(
 ) -> Path:
     """Write ``mesh['vertices']`` (with attributes and markers) as a .node file."""
     chunks = vertex_chunks(mesh, first_index=first_index, markers=markers)
-    return _output.write_text(path, chunks, generated_by)
+    return writing.write_text(path, chunks, generated_by)

@@ -18,7 +18,7 @@ from typing import Any
 
 import numpy as np
 
-from . import _output
+from . import writing
 
 
 def count_edges(triangles: np.ndarray) -> int:
@@ -32,10 +32,10 @@ def count_edges(triangles: np.ndarray) -> int:
 
 def off_chunks(mesh: Mapping[str, Any]) -> list[str]:
     """The text of a .off file (the edge count is Triangle's third header field)."""
-    xy = _output.get(mesh, "vertices", float, 2)
+    xy = writing.get(mesh, "vertices", float, 2)
     if xy is None:
         raise ValueError("the mesh has no 'vertices'")
-    triangles = _output.get(mesh, "triangles", int)
+    triangles = writing.get(mesh, "triangles", int)
     if triangles is None or triangles.size == 0:
         triangles = np.zeros((0, 3), dtype=np.int64)
     chunks = ["OFF\n%d  %d  %d\n" % (len(xy), len(triangles), count_edges(triangles))]
@@ -48,4 +48,4 @@ def write_off(
     path: str | os.PathLike[str], mesh: Mapping[str, Any], *, generated_by: str | None = None
 ) -> Path:
     """Write the vertices and triangles (corners only) as a .off file."""
-    return _output.write_text(path, off_chunks(mesh), generated_by)
+    return writing.write_text(path, off_chunks(mesh), generated_by)

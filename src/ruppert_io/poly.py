@@ -24,8 +24,8 @@ from typing import Any
 
 import numpy as np
 
-from . import _output
-from ._lines import INT32_MAX, INT32_MIN, Block, Line, LineReader
+from . import writing
+from .lines import INT32_MAX, INT32_MIN, Block, Line, LineReader
 from .errors import FormatError
 from .info import Info
 from .node import check_dimension, read_node, read_vertex_header, read_vertices, vertex_chunks
@@ -195,15 +195,15 @@ def poly_chunks(
     if with_vertices:
         chunks = vertex_chunks(mesh, first_index=first_index, markers=markers)
     else:
-        attr = _output.get(mesh, "vertex_attributes", float)
+        attr = writing.get(mesh, "vertex_attributes", float)
         k = 0 if attr is None else attr.shape[1]
         has_marks = markers and mesh.get("vertex_markers") is not None
         chunks = ["%d  %d  %d  %d\n" % (0, 2, k, int(has_marks))]
-    segments = _output.get(mesh, "segments", int, 2)
+    segments = writing.get(mesh, "segments", int, 2)
     if segments is None:
         segments = np.zeros((0, 2), dtype=np.int64)
     s = len(segments)
-    seg_marks = _output.get(mesh, "segment_markers", int, 1, rows=s) if markers else None
+    seg_marks = writing.get(mesh, "segment_markers", int, 1, rows=s) if markers else None
     chunks.append("%d  %d\n" % (s, int(seg_marks is not None)))
     numbers = range(first_index, first_index + s)
     ends = (segments + first_index).T.tolist()
@@ -212,12 +212,12 @@ def poly_chunks(
         chunks += ["%4d    %4d  %4d    %4d\n" % row for row in rows]
     else:
         chunks += ["%4d    %4d  %4d\n" % row for row in zip(numbers, *ends)]
-    holes = _output.get(mesh, "holes", float, 2)
+    holes = writing.get(mesh, "holes", float, 2)
     holes = np.zeros((0, 2)) if holes is None else holes
     chunks.append("%d\n" % len(holes))
     numbers = range(first_index, first_index + len(holes))
     chunks += ["%4d   %.17g  %.17g\n" % row for row in zip(numbers, *holes.T.tolist())]
-    regions = _output.get(mesh, "regions", float, 4)
+    regions = writing.get(mesh, "regions", float, 4)
     if regions is not None and len(regions):
         chunks.append("%d\n" % len(regions))
         numbers = range(first_index, first_index + len(regions))
@@ -241,4 +241,4 @@ def write_poly(
     chunks = poly_chunks(
         mesh, first_index=first_index, markers=markers, with_vertices=with_vertices
     )
-    return _output.write_text(path, chunks, generated_by)
+    return writing.write_text(path, chunks, generated_by)

@@ -174,12 +174,14 @@ def test_voronoi_is_triangles(workdir):
     """The .v.node/.v.edge data of a mesh are exactly what Triangle computes for it."""
     from triangle.tri import triang
 
+    from ruppert_io.cli.outputs import voronoi
+
     data = triangle.get_data("A")
     mesh = triangle.triangulate(data, "pq30")
     tri_in = {"pointlist": mesh["vertices"], "pointattributelist": mesh["vertex_attributes"],
               "trianglelist": mesh["triangles"]}
     _, vor = triang(tri_in, "zQrv")
-    ours = cli._voronoi(mesh)
+    ours = voronoi(mesh)
     assert np.array_equal(ours["vertices"], vor["pointlist"])
     assert np.array_equal(ours["vertex_attributes"], vor["pointattributelist"])
     assert np.array_equal(ours["edges"], vor["edgelist"])

@@ -8,9 +8,12 @@ of every output array (dtype, shape, bytes), the work counters and the trace.
 Each input's cases run in a child process, so a case that crashes the
 interpreter is recorded as ``crash`` instead of ending the run.  Cases
 whose result is an exception record the exception's type.  The grid reads
-the `triangle` package's sample files, this repository's ``data/`` and the
-shared corpus beside the checkout when it is there (cases whose input is
-missing are skipped by the test).
+the `triangle` package's sample files (Triangle's own, which this repository
+does not ship), this repository's ``data/`` (ruppert's own inputs) and the
+shared corpus beside the checkout when it is there, or where
+``RUPPERT_CORPUS`` says (cases whose input is missing are skipped by the
+test; rewrite golden.json only where the corpus is found, or its cases are
+lost).
 """
 
 from __future__ import annotations
@@ -27,7 +30,7 @@ import numpy as np
 
 HERE = Path(__file__).resolve().parent
 REPO = HERE.parents[1]
-CORPUS = REPO.parent / "shared" / "corpus"
+CORPUS = Path(os.environ.get("RUPPERT_CORPUS") or REPO.parent / "shared" / "corpus")
 GOLDEN = HERE / "golden.json"
 
 POINT_SWITCHES = ["", "c", "i", "l", "en", "cq30", "q20", "jq30"]

@@ -9,7 +9,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from ruppert_io._lines import Block, LineReader, parse_int, parse_real, split_fields
+from ruppert_io.lines import Block, LineReader, parse_int, parse_real, split_fields
 from ruppert_io.errors import FormatError
 
 

@@ -21,6 +21,7 @@ from instrument.study.compare import COLUMNS, Row, compare, flag_rows
 from instrument.study.triangle_engine import parse_triangle_statistics, triangle_statistics, triangle_switches
 
 ROOT = Path(__file__).resolve().parents[2]
+TRIANGLE_DATA = Path(triangle.__file__).parent / "data"  # Triangle's samples (not shipped here)
 HAS_CGAL = importlib.util.find_spec("CGAL") is not None
 
 
@@ -175,14 +176,15 @@ def test_command_writes_markdown_and_csv_through_the_embedded_cluster(tmp_path):
     embedded Dask cluster, then the tables; ``--dataset`` keeps the rows."""
     md, table, data = tmp_path / "out.md", tmp_path / "out.csv", tmp_path / "rows"
     proc = subprocess.run(
-        [sys.executable, "-m", "instrument.study.compare", str(ROOT / "data" / "A.poly"), "--switches", "p",
+        [sys.executable, "-m", "instrument.study.compare", str(TRIANGLE_DATA / "A.poly"), "--switches", "p",
          "--repeat", "1", "--workers", "2", "--markdown", str(md), "--csv", str(table), "--dataset", str(data)],
         check=False, capture_output=True, text=True, timeout=300, cwd=tmp_path,
     )
     assert proc.returncode == 0, proc.stderr
     assert "A.poly" in proc.stdout
     text = md.read_text()
-    assert text.startswith("# ruppert vs Triangle vs CGAL Mesh_2") and "| A.poly | p | triangle | ok |" in text
+    # a sample of the triangle package is labelled triangle/<name>
+    assert text.startswith("# ruppert vs Triangle vs CGAL Mesh_2") and "| triangle/A.poly | p | triangle | ok |" in text
     with table.open() as f:
         rows = list(csv.DictReader(f))
     assert list(rows[0]) == list(COLUMNS)

@@ -7,7 +7,9 @@ import subprocess
 import sys
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[2]
+import triangle
+
+TRIANGLE_DATA = Path(triangle.__file__).parent / "data"  # Triangle's samples (not shipped here)
 HEAVY = ("dask", "distributed", "pyarrow", "pebble", "instrument.study")
 
 PROBE = f"""
@@ -21,7 +23,7 @@ print(code, loaded)
 
 
 def test_importing_instrument_and_running_ruppert_loads_no_study_dependency(tmp_path):
-    shutil.copy(ROOT / "data" / "A.poly", tmp_path / "A.poly")
+    shutil.copy(TRIANGLE_DATA / "A.poly", tmp_path / "A.poly")
     proc = subprocess.run([sys.executable, "-c", PROBE], cwd=tmp_path, capture_output=True, text=True, timeout=300,
                           check=False)
     assert proc.returncode == 0, proc.stderr

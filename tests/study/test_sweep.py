@@ -17,7 +17,7 @@ triangle = pytest.importorskip("triangle")
 from instrument.check import check_mesh  # noqa: E402
 from instrument.study import dataset, inputs, summary, sweep  # noqa: E402
 
-ROOT = Path(__file__).resolve().parents[2]
+TRIANGLE_DATA = Path(triangle.__file__).parent / "data"  # Triangle's samples (not shipped here)
 HANG = "study_plugin_engines:hang"
 
 
@@ -31,7 +31,7 @@ def cluster():
 
 
 def small_grid() -> sweep.Grid:
-    A = inputs.file_input(ROOT / "data" / "A.poly")
+    A = inputs.file_input(TRIANGLE_DATA / "A.poly")
     # Triangle segfaults on a NaN coordinate (deterministically, here); our engine refuses it
     nan = inputs.data_input("nan-vertex", {"vertices": np.array([[0.0, 0.0], [1, 0], [0, 1], [np.nan, 0.5]])})
     g = sweep.grid([A, nan], ["pq30"], engine_names=["ours", "triangle", HANG], strategies=["triangle"],
@@ -101,7 +101,7 @@ def test_a_series_runs_smallest_first_and_stops_after_a_failure():
 
 
 def test_switch_templates_and_point_sets():
-    A = inputs.file_input(ROOT / "data" / "A.poly")
+    A = inputs.file_input(TRIANGLE_DATA / "A.poly")
     quad = inputs.family_input("quadratic", n=100, alpha=30.0)
     assert inputs.switches_for("pq{alpha}", quad) == "pq30"
     assert inputs.switches_for("pq{alpha}", A) is None

@@ -60,3 +60,49 @@ def problems(m: Mesh) -> list[str]:
     if alive != m.nlive:
         out.append(f"{alive} live slots, nlive says {m.nlive}")
     return out
+
+
+def refiner(switches: str = "q", *, slots: int = 64, queue: int = 64):
+    """Refinement's state for a unit test: switches ``switches``, Triangle's
+    queue order, ``slots`` rows of insertion scratch."""
+    from instrument.refine.order import strategy_id
+    from instrument.refine.state import Config, Refiner
+    from instrument.switches import parse
+
+    cfg = Config(parse(switches), strategy_id("triangle"), True, False)
+    return Refiner(cfg, budget=-1, slots=slots, queue=queue, records=16, trace=False)
+
+
+def slot_of(m: Mesh, corners) -> int:
+    """The live triangle whose corners are ``corners`` (in any rotation)."""
+    want = set(int(c) for c in corners)
+    corner = m.arrays()["corner"]
+    found = [int(t) for t in m.live_triangles() if set(corner[3 * t : 3 * t + 3].tolist()) == want]
+    assert len(found) == 1, f"{sorted(want)}: {found}"
+    return found[0]
+
+
+def corner_sets(m: Mesh) -> set[frozenset]:
+    """Each live triangle as the set of its corners."""
+    corner = m.arrays()["corner"]
+    return {frozenset(corner[3 * t : 3 * t + 3].tolist()) for t in m.live_triangles()}
+
+
+def as_result(m: Mesh) -> dict:
+    """The mesh as ``instrument.check.check_mesh`` reads a result: its
+    vertices and live triangles, and its subsegments (edges with a record)."""
+    a = m.arrays()
+    tris = m.live_triangles()
+    out = {
+        "vertices": a["xy"][: m.nvert].copy(),
+        "triangles": a["corner"].reshape(-1, 3)[tris].astype(np.int32),
+    }
+    if m.has_constraint_tables:
+        seg = a["seg"]
+        edges = {
+            tuple(sorted((int(a["corner"][3 * t + (k + 1) % 3]), int(a["corner"][3 * t + (k + 2) % 3]))))
+            for t in tris for k in range(3) if seg[3 * t + k] >= 0
+        }
+        if edges:
+            out["segments"] = np.array(sorted(edges), dtype=np.int32)
+    return out

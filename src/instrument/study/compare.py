@@ -1,7 +1,7 @@
 """Compare ruppert's engine with Triangle and CGAL Mesh_2 on Triangle-format inputs.
 
     python -m instrument.study.compare                          # the triangle package's samples, switches pq30
-    python -m instrument.study.compare data/A.poly --switches p --markdown out.md --csv out.csv
+    python -m instrument.study.compare data/bracket.poly --switches p --markdown out.md --csv out.csv
     python -m instrument.study.compare --corpus ../shared/corpus --strategies all --plots plots/
 
 Default inputs: the `triangle` package's sample .poly files, and every file of

@@ -1,6 +1,6 @@
 """The engines the study runs, behind one interface, and what is measured on their output.
 
-    python -m instrument.study.engines data/A.poly --switches pq30 --engines ours,triangle
+    python -m instrument.study.engines data/bracket.poly --switches pq30 --engines ours,triangle
     python -m instrument.study.engines samples --strategies all --time-limit 60
 
 An engine is a function ``fn(data, switches, *, strategy, seed, repeat,

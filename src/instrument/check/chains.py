@@ -1,0 +1,224 @@
+"""Segments as chains of subsegments: the input's, and the output's own.
+
+``input_chains`` checks that every input segment, where it lies in the mesh,
+is covered by collinear output subsegments, and returns it as a chain (its
+endpoints and the output vertices on it).  ``output_chains`` rebuilds the
+segments of an output alone as its maximal straight chains of subsegments.
+The quality check uses both to find small input angles.
+
+Triangle moves split points onto a segment's line only once in floating
+point, so "on the segment" allows ``ON_SEGMENT_RTOL``.
+"""
+
+from __future__ import annotations
+
+import math
+from collections import defaultdict
+
+import numpy as np
+
+from .exact import dot_sign_scalar, orient_exact, sign2x2
+from .grid import box_pairs, join_keys
+from .structure import segments_meet_triangles
+from .view import MAX_MESSAGES, MeshView, Problems, int_array, segment_keys
+
+
+#: A vertex counts as lying on a segment if it is exactly on it, or if its
+#: distance to the segment's line is at most this times (up to a factor 2) the
+#: largest absolute coordinate involved.  Triangle moves split points onto the
+#: line only once in floating point, so they are typically off by <= ~1 ulp.
+ON_SEGMENT_RTOL = 2.0**-40
+
+
+def _on_line(u, v, x) -> bool:
+    """x lies on the line uv: exactly, or within ON_SEGMENT_RTOL."""
+    if not all(map(math.isfinite, (*u, *v, *x))):
+        return False
+    scale = max(abs(u[0]), abs(u[1]), abs(v[0]), abs(v[1]), abs(x[0]), abs(x[1]))
+    if scale == 0:
+        return True
+    k = -math.frexp(scale)[1]  # scale by a power of two: coordinates <= 1
+    ux, uy, vx, vy, xx, xy = (math.ldexp(c, k) for c in (*u, *v, *x))
+    dx, dy = vx - ux, vy - uy
+    cross = dx * (xy - uy) - dy * (xx - ux)
+    if abs(cross) <= ON_SEGMENT_RTOL * math.hypot(dx, dy):
+        return True
+    return orient_exact(u, v, x) == 0
+
+
+class Chains:
+    """Segments as chains (J0, J1, interior output vertices)."""
+
+    def __init__(self):
+        self.chains: list[tuple[int, int, list[int]]] = []
+        self.input_points: set | None = None
+
+
+def _subseg_adjacency(m: MeshView):
+    ok, _ = segment_keys(m)
+    adj = defaultdict(list)
+    for a, b in m.S[ok].tolist():
+        adj[a].append(b)
+        adj[b].append(a)
+    return adj
+
+
+def input_chains(m: MeshView, pslg, probs: Problems) -> list:
+    """Every input segment, where it meets the mesh, is a chain of subsegments.
+
+    The output vertices (used by triangles or subsegments) lying on an input
+    segment (exactly, or within ON_SEGMENT_RTOL) strictly between its
+    endpoints cut it into pieces.  Each piece must be an output subsegment,
+    or lie outside the mesh (its open segment meets no triangle): Triangle
+    deletes subsegments that are eaten with holes and concavities.
+
+    Returns the input segments as chains (J0, J1, inner output vertices).
+    """
+    iv = np.asarray(pslg.get("vertices", np.zeros((0, 2))), dtype=np.float64).reshape(-1, 2)
+    iseg = int_array(pslg.get("segments", np.zeros((0, 2))), 2).reshape(-1, 2)
+    if not len(iseg):
+        return []
+    okidx = ((iseg >= 0) & (iseg < len(iv))).all(axis=1)
+    probs.add("input segments out of range", (
+        f"input segment {k} {iseg[k].tolist()} has an index out of range"
+        for k in np.flatnonzero(~okidx)
+    ), int((~okidx).sum()))
+    U = np.where(okidx[:, None], iv[np.where(okidx[:, None], iseg, 0)[:, 0]], np.nan)
+    W = np.where(okidx[:, None], iv[np.where(okidx[:, None], iseg, 0)[:, 1]], np.nan)
+    keep = okidx & np.isfinite(U).all(1) & np.isfinite(W).all(1) & (U != W).any(1)
+    segk = np.flatnonzero(keep)
+    if not segk.size or not m.good.any():
+        return []
+    U, W = U[segk], W[segk]
+
+    # Output vertices that matter: used by good triangles or by subsegments.
+    ok, skey = segment_keys(m)
+    ids = np.unique(np.concatenate([m.Tc[m.good].ravel(), m.S[ok].ravel()]))
+    ids = ids[np.isfinite(m.V[ids]).all(1)]
+    X = m.V[ids]
+    where = {}
+    for w, p in zip(ids.tolist(), X.tolist()):
+        where.setdefault(tuple(p), w)
+
+    # Output vertices strictly inside each input segment.
+    pbox = np.stack([X[:, 0], X[:, 0], X[:, 1], X[:, 1]], 1)
+    # boxes widened by the tolerance: a vertex near a vertical or horizontal
+    # segment may lie a rounding error outside its exact box
+    slack = 2.0 * ON_SEGMENT_RTOL * np.abs(np.concatenate([U, W], 1)).max(1)
+    sbox = np.stack([np.minimum(U[:, 0], W[:, 0]) - slack, np.maximum(U[:, 0], W[:, 0]) + slack,
+                     np.minimum(U[:, 1], W[:, 1]) - slack, np.maximum(U[:, 1], W[:, 1]) + slack], 1)
+    pp, ps = box_pairs(pbox, sbox)
+    if len(pp):
+        u, w, x = U[ps], W[ps], X[pp]
+        scale = np.maximum(np.abs(np.concatenate([u, w, x], 1)).max(1), 2.0**-1000)
+        k = -np.frexp(scale)[1][:, None]
+        su, sw, sx = np.ldexp(u, k), np.ldexp(w, k), np.ldexp(x, k)
+        d = sw - su
+        cross = d[:, 0] * (sx[:, 1] - su[:, 1]) - d[:, 1] * (sx[:, 0] - su[:, 0])
+        near = np.abs(cross) <= ON_SEGMENT_RTOL * np.hypot(d[:, 0], d[:, 1])
+        after_u = sign2x2(x[:, 0], u[:, 0], w[:, 0], u[:, 0], u[:, 1], x[:, 1], w[:, 1], u[:, 1]) > 0
+        before_w = sign2x2(w[:, 0], x[:, 0], w[:, 0], u[:, 0], x[:, 1], w[:, 1], w[:, 1], u[:, 1]) > 0
+        sel = near & after_u & before_w
+        pp, ps = pp[sel], ps[sel]
+        # position along the segment, in a per-segment power-of-two scale
+        kk = -np.frexp(np.maximum(np.abs(np.concatenate([u, w], 1)).max(1), 2.0**-1000))[1]
+        kk = kk[sel][:, None]
+        su = np.ldexp(u[sel], kk)
+        t = ((np.ldexp(x[sel], kk) - su) * (np.ldexp(w[sel], kk) - su)).sum(1)
+    else:
+        t = np.zeros(0)
+    # Nodes: endpoints (t = -inf / +inf) and the inner vertices, per segment.
+    ns = len(segk)
+    uid = np.array([where.get(tuple(p), -1) for p in U.tolist()], dtype=np.int64)
+    wid = np.array([where.get(tuple(p), -1) for p in W.tolist()], dtype=np.int64)
+    node_seg = np.concatenate([np.arange(ns), ps, np.arange(ns)])
+    node_t = np.concatenate([np.full(ns, -np.inf), t, np.full(ns, np.inf)])
+    node_id = np.concatenate([uid, ids[pp], wid])
+    node_xy = np.concatenate([U, X[pp], W])
+    order = np.lexsort((node_t, node_seg))
+    node_seg, node_id, node_xy = node_seg[order], node_id[order], node_xy[order]
+    nn = len(order)
+    # Piece i joins node i and node i + 1 of the same segment.  A subsegment
+    # whose two ends are nodes of one segment covers every piece between them
+    # (by rank, so that nearly coincident nodes may come in either order).
+    S = m.S[ok]
+    if len(S):
+        ends = np.concatenate([S[:, 0], S[:, 1]])
+        which = np.concatenate([np.arange(len(S)), np.arange(len(S))])
+        valid = node_id >= 0
+        nodes = np.flatnonzero(valid)
+        nj, ej = join_keys(nodes, node_id[valid], np.arange(len(ends)), ends)
+        # (subsegment, segment) pairs met at both ends
+        key = which[ej].astype(np.int64) * np.int64(ns) + node_seg[nj]
+        srt = np.lexsort((nj, key))
+        key, nj = key[srt], nj[srt]
+        same = np.flatnonzero(key[1:] == key[:-1])  # exactly two entries per pair
+        lo = np.minimum(nj[same], nj[same + 1])
+        hi = np.maximum(nj[same], nj[same + 1])
+        cover = np.zeros(nn + 1, np.int64)
+        np.add.at(cover, lo, 1)
+        np.add.at(cover, hi, -1)
+        covered_piece = np.cumsum(cover)[:-1] > 0
+    else:
+        covered_piece = np.zeros(nn, bool)
+    a = np.arange(nn - 1)
+    a = a[node_seg[a] == node_seg[a + 1]]
+    b = a + 1
+    ia, ib = node_id[a], node_id[b]
+    covered = covered_piece[a]
+    chains = []
+    cuts = np.flatnonzero(node_seg[1:] != node_seg[:-1]) + 1
+    for grp in np.split(node_id, cuts):
+        if len(grp) >= 2 and grp[0] >= 0 and grp[-1] >= 0:
+            chains.append((int(grp[0]), int(grp[-1]), grp[1:-1].tolist()))
+    gaps = np.flatnonzero(~covered)
+    if not gaps.size:
+        return chains
+    tri, g = segments_meet_triangles(m, node_xy[a[gaps]], node_xy[b[gaps]])
+    g = np.unique(g)
+    msgs = []
+    for j in g[:MAX_MESSAGES]:
+        k = int(segk[node_seg[a[gaps[j]]]])
+        i0, i1 = int(ia[gaps[j]]), int(ib[gaps[j]])
+        msgs.append(
+            f"input segment {k} {iseg[k].tolist()}: the piece from output vertex {i0} "
+            f"{node_xy[a[gaps[j]]].tolist()} to {i1} {node_xy[b[gaps[j]]].tolist()} lies in "
+            "the mesh but is not a chain of collinear subsegments"
+        )
+    probs.add("input segments missing", msgs, len(g))
+    return chains
+
+
+def output_chains(m: MeshView, chains: Chains):
+    """Segments as maximal straight chains of output subsegments.
+
+    A chain passes through a vertex with exactly two subsegments that are
+    collinear (see ON_SEGMENT_RTOL) and opposite, unless the vertex is an input
+    vertex (when the input points are known).
+    """
+    adj = _subseg_adjacency(m)
+    Vl = m.V.tolist()
+    inp = chains.input_points
+    through = set()
+    for w, nb in adj.items():
+        if inp is not None and tuple(Vl[w]) in inp:
+            continue
+        if len(nb) == 2 and nb[0] != nb[1]:
+            a, b, p = tuple(Vl[nb[0]]), tuple(Vl[nb[1]]), tuple(Vl[w])
+            if _on_line(a, b, p) and dot_sign_scalar(p, a, p, b) < 0:
+                through.add(w)
+    done = set()
+    for j, nb in adj.items():
+        if j in through:
+            continue
+        for x in nb:
+            if (j, x) in done:
+                continue
+            prev, cur, path = j, x, []
+            while cur in through and len(path) <= len(adj):
+                path.append(cur)
+                n0, n1 = adj[cur]
+                prev, cur = cur, (n1 if n0 == prev else n0)
+            done.add((j, x))
+            done.add((cur, prev))
+            chains.chains.append((j, cur, path))
