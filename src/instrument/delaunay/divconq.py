@@ -26,7 +26,7 @@ the half's last vertex (in the frame of the cut) and leaving its first
 vertex: ``hull_at[v]`` keeps the ghost of the hull edge leaving ``v``, which
 is unique for such extreme vertices.
 
-(About 580 lines: the cuts, the base cases and the merge are one algorithm,
+(About 650 lines: the cuts, the base cases and the merge are one algorithm,
 whose merge runs millions of times at 10^6 points and inlines every helper
 here.)
 """

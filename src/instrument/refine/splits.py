@@ -12,6 +12,10 @@ is pooled and split instead.
 (nothing half done; the driver grows it and calls again), ``PAUSE`` now and
 then (so that Python can see Ctrl-C and report progress), ``PRECISION``
 when a subsegment is too short to split, and ``DONE``.
+
+(About 500 lines: the two kinds of split and the loop that orders them share
+the room checks and the undo of an interrupted step; the pieces each split
+uses live in cavity, criteria, encroach, deletion and queues.)
 """
 
 from __future__ import annotations
