@@ -14,6 +14,7 @@ mesher not replaying Triangle byte for byte must expect.
     python scripts/triangle_spread.py                      # samples and corpus, pq30
     python scripts/triangle_spread.py --switches pq20 A.poly
     python scripts/triangle_spread.py --markdown docs/compare/triangle-spread.md
+    python scripts/triangle_spread.py --all --ours --switches pq33    # and ours against the size rule
 """
 
 from __future__ import annotations
@@ -47,9 +48,12 @@ def off(n: int, ref: int) -> bool:
     return abs(n - ref) > max(3, 0.02 * ref)
 
 
-def spread(path: Path, switches: str, kinds=TRANSFORMS) -> dict | None:
+def spread(path: Path, switches: str, kinds=TRANSFORMS, ours: bool = False) -> dict | None:
     """Vertex counts of Triangle's meshes of ``path`` and its re-expressions,
-    or None if Triangle makes no mesh of it."""
+    or None if Triangle makes no mesh of it.  ``ours``: also our count, the
+    size rule's bound (Triangle's largest count + 1 % or 2 vertices) and the
+    exact checker's verdict on our mesh (the angle of ``q``, the area of
+    ``a``, the input as PSLG)."""
     try:
         tri = {k: v for k, v in ruppert_io.read(path).items() if np.size(v)}
     except ruppert_io.FormatError:
@@ -61,6 +65,18 @@ def spread(path: Path, switches: str, kinds=TRANSFORMS) -> dict | None:
     row = {"input": path.name, "switches": opts, "original": len(base["vertices"])}
     for kind in kinds:
         row[kind] = len(triangle.triangulate(transformed(tri, kind), opts)["vertices"])
+    if ours:
+        import instrument
+        from instrument.check import check_mesh
+        from instrument.switches import parse
+
+        o = parse(opts)
+        mesh = instrument.triangulate(tri, opts)
+        most = max(row[k] for k in ("original", *kinds))
+        row["ours"] = len(mesh["vertices"])
+        row["bound"] = most + max(2.0, 0.01 * most)
+        row["valid"] = not check_mesh(mesh, tri if o.p else None, min_angle=o.min_angle if o.q else None,
+                                      max_area=o.max_area if o.max_area > 0 else None)
     return row
 
 
@@ -72,8 +88,15 @@ def markdown(rows: list[dict], switches: str, kinds=TRANSFORMS) -> str:
         "| input | original | " + " | ".join(kinds) + " |",
         "|---|---:|" + "---:|" * len(kinds),
     ]
+    ours = bool(rows) and "ours" in rows[0]
+    if ours:
+        lines[2] = lines[2].rstrip() + " ours | rule |"
+        lines[3] = lines[3] + "---:|---|"
     for r in rows:
         cells = [f"{r[k]}{'*' if off(r[k], r['original']) else ''}" for k in kinds]
+        if ours:
+            verdict = ("within" if r["ours"] <= r["bound"] else "ABOVE") + ("" if r["valid"] else ", INVALID")
+            cells += [str(r["ours"]), verdict]
         lines.append(f"| {r['input']} | {r['original']} | " + " | ".join(cells) + " |")
     counts = {k: sum(off(r[k], r["original"]) for r in rows) for k in kinds}
     changed = sum(any(off(r[k], r["original"]) for k in kinds) for r in rows)
@@ -82,6 +105,11 @@ def markdown(rows: list[dict], switches: str, kinds=TRANSFORMS) -> str:
         f"Inputs off by more than 2%: " + ", ".join(f"{k} {n}" for k, n in counts.items())
         + f"; under at least one re-expression: {changed} of {len(rows)}.",
     ]
+    if ours:
+        above = sum(r["ours"] > r["bound"] for r in rows)
+        invalid = sum(not r["valid"] for r in rows)
+        lines.append(f"Ours above the size rule (Triangle's largest count + 1 % or 2 vertices): {above} of "
+                     f"{len(rows)}; failing the exact checker: {invalid}.")
     return "\n".join(lines) + "\n"
 
 
@@ -92,9 +120,12 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--corpus", type=Path, default=DEFAULT_CORPUS)
     ap.add_argument("--markdown", type=Path, help="also write the table here")
     ap.add_argument("--all", action="store_true", help=f"every re-expression ({', '.join(KINDS)})")
+    ap.add_argument("--ours", action="store_true",
+                    help="also mesh with ruppert and judge it by the size rule and the exact checker")
     args = ap.parse_args(argv)
     kinds = KINDS if args.all else TRANSFORMS
-    rows = [r for p in (args.inputs or default_inputs(args.corpus)) if (r := spread(p, args.switches, kinds))]
+    rows = [r for p in (args.inputs or default_inputs(args.corpus))
+            if (r := spread(p, args.switches, kinds, ours=args.ours))]
     text = markdown(rows, args.switches, kinds)
     print(text, end="")
     if args.markdown:
