@@ -27,7 +27,7 @@ import numpy as np
 
 HERE = Path(__file__).resolve().parent
 REPO = HERE.parents[1]
-CORPUS = REPO.parent / "shared" / "corpus"
+CORPUS = Path(os.environ.get("RUPPERT_CORPUS", REPO.parent / "shared" / "corpus"))
 GOLDEN = HERE / "golden.json"
 
 POINT_SWITCHES = ["", "c", "i", "l", "en", "cq30", "q20", "jq30"]
