@@ -145,13 +145,6 @@ DEFECTS += [
         "ours' order)",
         lambda c, f, n: f.kind == "size" and read_switches(c.switches).i and read_switches(c.switches).u,
     ),
-    Defect(
-        "angle-above-guarantee",
-        "above Triangle's guaranteed 28.6 degrees, ours leaves triangles below q where Triangle's mesh meets it "
-        "(collinear points at 1e10 under q32.5: 32.09 degrees)",
-        lambda c, f, n: f.kind == "invalid-mesh" and "minimum angle" in f.message
-        and read_switches(c.switches).angle > 28.6,
-    ),
 ]
 
 DEFECTS += [
