@@ -179,20 +179,36 @@ def _split_at_apex(r: Refiner, m: Mesh, segs: Subsegments, e: Index, f: Index, t
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
-def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles: cython.bint) -> cython.int:
-    """Split subsegment edge ``e`` at its midpoint or on a power-of-two shell
-    around an end shared with another segment.  Returns DONE, NEED_ROOM
-    (nothing changed) or PRECISION."""
-    step_begins(r, m.work)
-    xy = m.xy
-    o: Index = m.corner[lnext(e)]
-    d: Index = m.corner[lprev(e)]
+def acute_ends(m: Mesh, e: Index) -> cython.int:
+    """Which ends of subsegment edge ``e`` another subsegment meets in a
+    triangle on either side: 1 its origin, 2 its destination (Triangle's
+    ``acuteorg`` and ``acutedest``)."""
     tw: Index = m.twin[e]
     acute_org: cython.bint = m.seg[lprev(e)] != NO_SEG
     acute_dest: cython.bint = m.seg[lnext(e)] != NO_SEG
     if tw != NO_EDGE:
         acute_org = acute_org or m.seg[lnext(tw)] != NO_SEG
         acute_dest = acute_dest or m.seg[lprev(tw)] != NO_SEG
+    return (1 if acute_org else 0) | (2 if acute_dest else 0)
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles: cython.bint, acute: cython.int) -> cython.int:
+    """Split subsegment edge ``e`` at its midpoint or on a power-of-two shell
+    around an end shared with another segment (``acute``: ``acute_ends`` of
+    ``e`` as it was before Chew's deletions, -1: as it is now).  Returns
+    DONE, NEED_ROOM (nothing changed) or PRECISION."""
+    step_begins(r, m.work)
+    xy = m.xy
+    o: Index = m.corner[lnext(e)]
+    d: Index = m.corner[lprev(e)]
+    tw: Index = m.twin[e]
+    if acute < 0:
+        acute = acute_ends(m, e)
+    acute_org: cython.bint = (acute & 1) != 0
+    acute_dest: cython.bint = (acute & 2) != 0
     # Triangle's record runs the other way along e, from e0 = d to e1 = o;
     # computing from its ends gives its rounding, so the same vertices
     e0: Index = d
@@ -303,6 +319,14 @@ def split_encroached(r: Refiner, m: Mesh, segs: Subsegments, triangles: cython.b
         e = enc_edge(r, m, i)
         if e >= 0:
             r.enc[i, 3] = m.stamp[e // 3]
+        if e >= 0 and r.acute_slot != i:
+            # Triangle looks at the ends before Chew's deletions: a deletion
+            # can leave a triangle whose other edge at an end is a
+            # subsegment (the hull's, say), which must not turn a midpoint
+            # split into a shell split (kept across a NEED_ROOM, when some
+            # deletions may be done)
+            r.acute = acute_ends(m, e)
+            r.acute_slot = i
         if e >= 0 and not r.cfg.diametral:
             u = r.enc[i, 0]
             v = r.enc[i, 1]
@@ -311,9 +335,10 @@ def split_encroached(r: Refiner, m: Mesh, segs: Subsegments, triangles: cython.b
             if m.stamp[e // 3] != r.enc[i, 3] or m.corner[lnext(e)] != u:  # a deletion re-made it
                 e = find_edge(m, u, v)
         if e >= 0:  # (else split or gone since it was pooled)
-            status = split_subsegment(r, m, segs, e, triangles)
+            status = split_subsegment(r, m, segs, e, triangles, r.acute)
             if status != DONE:
                 return status
+        r.acute_slot = -1
         enc_free(r, i)
         r.enc_cursor = i + 1
     r.enc_busy = False

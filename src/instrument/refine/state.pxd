@@ -53,6 +53,8 @@ cdef class Refiner:
     cdef public Index enc_free       # last freed slot, -1 none (freed slots chain through column 1)
     cdef public Index enc_cursor     # the slot the current pass is at
     cdef public bint enc_busy        # a pass is under way (resume at enc_cursor)
+    cdef public Index acute_slot     # the pool record whose ends' flags ``acute`` holds (-1 none)
+    cdef public int acute            # its ends next to another subsegment as it was pooled: 1 org, 2 dest
     # scratch of one insertion (cavity.py)
     cdef public long long[::1] cav   # cavity triangles (and, from the end, those tested outside)
     cdef public long long[::1] fan   # the triangles an insertion made

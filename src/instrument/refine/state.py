@@ -84,6 +84,8 @@ class Refiner:
         self.enc_free = -1
         self.enc_cursor = 0
         self.enc_busy = False
+        self.acute_slot = -1
+        self.acute = 0
         self.cav = np.zeros(slots, dtype=np.int64)
         self.fan = np.zeros(slots, dtype=np.int64)
         self.bnd = np.zeros((slots, 5), dtype=np.int64)
