@@ -83,8 +83,8 @@ def run(
     if steiner_budget(ms, o) == 0:
         return np.zeros(0, dtype=TRACE_DTYPE) if trace else None
     user = triunsuitable if o.u else None
-    domain = _domain_area(ms)
     bound = _smallest_area_bound(ms, o)
+    domain = _domain_area(ms) if bound else 0.0  # the limit depends on the domain only under an area bound
     if max_vertices is None:
         n_input = ms.n_input + ms.segs.count
         limit = limits.vertex_limit(n_input=n_input, domain_area=domain, area_bound=bound, steiner_budget=steiner_budget(ms, o))

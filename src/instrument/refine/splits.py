@@ -516,19 +516,37 @@ def refine(r: Refiner, m: Mesh, segs: Subsegments) -> cython.int:
 def tally_encroached(r: Refiner, m: Mesh, segs: Subsegments) -> None:
     """Pool every encroached subsegment, in the order the subsegments were
     made (Triangle's pool order), each edge once."""
-    a = m.arrays()
-    n = m.nslot
-    seg, corner, twin, stamp, xy = a["seg"], a["corner"], a["twin"], a["stamp"], a["xy"]
-    e = np.flatnonzero(seg[: 3 * n] != NO_SEG)
-    e = e[stamp[e // 3] > 0]
-    # one side per subsegment: the one its record's ends run along (the
-    # edge it was made on), else the only one
-    rec = seg[e]
-    k = e % 3
-    org, dest = corner[e - k + (k + 1) % 3], corner[e - k + (k + 2) % 3]
-    ends = np.asarray(segs.ends)[rec]
-    along = np.einsum("ij,ij->i", xy[dest] - xy[org], xy[ends[:, 1]] - xy[ends[:, 0]]) > 0
-    first = along | (twin[e] == NO_EDGE)
-    e = e[first]
-    e = e[np.unique(seg[e], return_index=True)[1]]
-    check_subsegments(r, m, np.ascontiguousarray(e, dtype=np.int64))
+    first = np.full(segs.count, -1, dtype=np.int64)
+    first_side(m, segs, first)
+    check_subsegments(r, m, np.ascontiguousarray(first[first >= 0]))
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def first_side(m: Mesh, segs: Subsegments, first: cython.longlong[::1]) -> cython.void:
+    """``first[rec]``: one side of each live subsegment record, the lowest
+    edge number among its sides that run along the record's ends (the edge
+    it was made on) or have no twin (the only side); -1 if none."""
+    xy = m.xy
+    t: Index
+    k: Index
+    rec: Index
+    org: Index
+    dest: Index
+    a: Index
+    b: Index
+    along: cython.bint
+    for e in range(3 * m.nslot):
+        rec = m.seg[e]
+        t = e // 3
+        if rec == NO_SEG or m.stamp[t] <= 0 or first[rec] >= 0:
+            continue
+        k = e - 3 * t
+        org = m.corner[3 * t + (k + 1) % 3]
+        dest = m.corner[3 * t + (k + 2) % 3]
+        a = segs.ends[rec, 0]
+        b = segs.ends[rec, 1]
+        along = (xy[dest, 0] - xy[org, 0]) * (xy[b, 0] - xy[a, 0]) + (xy[dest, 1] - xy[org, 1]) * (xy[b, 1] - xy[a, 1]) > 0.0
+        if along or m.twin[e] == NO_EDGE:
+            first[rec] = e
