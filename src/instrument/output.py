@@ -9,6 +9,7 @@ from __future__ import annotations
 import numpy as np
 
 from .core.mesh import NO_EDGE, NO_SEG
+from .core.navigate import edge_ends, list_edges
 from .core.mesh import interpolate_attributes as interpolate
 from .secondorder import midpoints
 
@@ -37,10 +38,6 @@ def _col(a, dtype=np.int32) -> np.ndarray:
 def _put(out: dict, key: str, arr: np.ndarray) -> None:
     if arr is not None and arr.size > 0:
         out[key] = np.ascontiguousarray(arr)
-
-
-# A triangle's edges in Triangle's listing order: (c0, c1), (c1, c2), (c2, c0).
-_LISTING = np.array([2, 0, 1])
 
 
 # ---------------------------------------------------------------- assembly
@@ -87,12 +84,12 @@ def assemble(ms, inp: dict, o) -> Result:
 
     def edge_listing() -> tuple[np.ndarray, np.ndarray]:
         """The edges as ``e`` lists them, and their markers."""
-        e = listed_edges(corner, twin, seg, tris, slot_index())
+        e = listed_edges(m)
         if o.p or o.c:
             marks = np.where(seg[e] != NO_SEG, marker[np.maximum(seg[e], 0)], 0)
         else:
             marks = twin[e] == NO_EDGE
-        return ids(ends_of(corner, e)), marks
+        return ids(ends_of(m, e)), marks
 
     verts = arrays["xy"][:nv][keep] if renumber else arrays["xy"][:nv].copy()
     vattrs = None
@@ -124,9 +121,9 @@ def assemble(ms, inp: dict, o) -> Result:
         if o.A and arrays["attribute"].shape[0]:
             _put(out, "triangle_attributes", arrays["attribute"][tris].reshape(-1, 1))
     if (o.p or o.c) and not o.P:
-        constrained = listed_edges(corner, twin, seg, tris, slot_index(), constrained=True)
+        constrained = listed_edges(m, constrained=True)
         # a subsegment made on triangle edge a -> b is listed b -> a (Triangle's order)
-        _put(out, "segments", ids(ends_of(corner, constrained)[:, ::-1]))
+        _put(out, "segments", ids(ends_of(m, constrained)[:, ::-1]))
         if not o.B:
             _put(out, "segment_markers", _col(marker[seg[constrained]]))
         if o.p:
@@ -145,23 +142,17 @@ def assemble(ms, inp: dict, o) -> Result:
     return out
 
 
-def listed_edges(corner, twin, seg, tris, tri_index, *, constrained: bool = False) -> np.ndarray:
-    """Each edge once, as Triangle lists them: triangle by triangle, the edges
-    (c0, c1), (c1, c2), (c2, c0) -- our edges 2, 0, 1 -- taking an edge when
-    its neighbour is absent or comes later.  ``constrained``: subsegments only
-    (picked before the edge arrays are built: a few of millions)."""
-    if constrained:
-        rows, k = np.nonzero(seg.reshape(-1, 3)[tris][:, _LISTING] != NO_SEG)
-        e = 3 * tris[rows] + _LISTING[k]
-    else:
-        e = (3 * tris[:, None] + _LISTING).ravel()
-    tw = twin[e]
-    keep = (tw == NO_EDGE) | (tri_index[np.maximum(tw, 0) // 3] > tri_index[e // 3])
-    return e[keep]
+def listed_edges(m, *, constrained: bool = False) -> np.ndarray:
+    """Each edge once, as Triangle lists them (``navigate.list_edges``):
+    triangle by triangle, the edges (c0, c1), (c1, c2), (c2, c0), taking an
+    edge when its neighbour is absent or comes later; ``constrained``:
+    subsegments only."""
+    out = np.empty(3 * m.nslot, dtype=np.int64)
+    return out[: list_edges(m, constrained, out)]
 
 
-def ends_of(corner, e: np.ndarray) -> np.ndarray:
-    """(origin, destination) of the edges ``e``."""
-    nxt = np.where(e % 3 == 2, e - 2, e + 1)
-    prv = np.where(e % 3 == 0, e + 2, e - 1)
-    return np.stack([corner[nxt], corner[prv]], axis=1)
+def ends_of(m, e: np.ndarray) -> np.ndarray:
+    """(origin, destination) of the edges ``e`` (int32, as the corners)."""
+    out = np.empty((e.shape[0], 2), dtype=np.int32)
+    edge_ends(m, np.ascontiguousarray(e, dtype=np.int64), out)
+    return out

@@ -223,7 +223,7 @@ class Mesh:
         live = np.asarray(self.stamp)[:n] > 0
         if not ghosts:
             c = np.asarray(self.corner)[: 3 * n].reshape(-1, 3)
-            live &= (c >= 0).all(axis=1)
+            live &= (c[:, 0] >= 0) & (c[:, 1] >= 0) & (c[:, 2] >= 0)  # (all(axis=1) is several times slower)
         return np.flatnonzero(live).astype(np.int64, copy=False)
 
     def rotate_corners(self, shift: int) -> None:

@@ -121,3 +121,54 @@ def build_vertex_edges(m: Mesh) -> cython.void:
                 v = m.corner[3 * t + k]
                 if v >= 0:
                     m.vtri[v] = 3 * t + (k + 2) % 3
+
+
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _listed(m: Mesh, t: Index) -> cython.bint:
+    """Triangle ``t`` is in the output: alive, and no ghost."""
+    return m.stamp[t] > 0 and m.corner[3 * t] >= 0 and m.corner[3 * t + 1] >= 0 and m.corner[3 * t + 2] >= 0
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def list_edges(m: Mesh, constrained: cython.bint, out: cython.longlong[::1]) -> Index:
+    """Each edge once, as Triangle lists them, into ``out`` (room for three
+    per triangle); returns how many.  Triangle by triangle in slot order, the
+    edges (c0, c1), (c1, c2), (c2, c0) -- our edges 2, 0, 1 -- taking an edge
+    when it has no neighbour or its neighbour comes later in the output
+    (``constrained``: subsegments only)."""
+    n: Index = 0
+    e: Index
+    tw: Index
+    for t in range(m.nslot):
+        if not _listed(m, t):
+            continue
+        for j in range(3):
+            e = 3 * t + (j + 2) % 3
+            if constrained and m.seg[e] < 0:
+                continue
+            tw = m.twin[e]
+            if tw < 0 or (tw // 3 > t and _listed(m, tw // 3)):
+                out[n] = e
+                n += 1
+    return n
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def edge_ends(m: Mesh, edges: cython.longlong[::1], out: cython.int[:, ::1]) -> cython.void:
+    """``out[i]`` = (origin, destination) of edge ``edges[i]``."""
+    e: Index
+    t: Index
+    k: Index
+    for i in range(edges.shape[0]):
+        e = edges[i]
+        t = e // 3
+        k = e - 3 * t
+        out[i, 0] = m.corner[3 * t + (k + 1) % 3]
+        out[i, 1] = m.corner[3 * t + (k + 2) % 3]

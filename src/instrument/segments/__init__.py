@@ -34,7 +34,8 @@ def clean_segments(segments: np.ndarray, xy: np.ndarray, dup: np.ndarray, warnin
     ok = ~(bad_first | bad_second)
     ends = np.where(ok[:, None], seg, 0)
     ends = np.where(dup[ends] >= 0, dup[ends], ends)
-    coincident = ok & (xy[ends[:, 0]] == xy[ends[:, 1]]).all(axis=1)
+    first, second = xy[ends[:, 0]], xy[ends[:, 1]]
+    coincident = ok & (first[:, 0] == second[:, 0]) & (first[:, 1] == second[:, 1])
     for i in np.flatnonzero(~ok | coincident):
         if bad_first[i]:
             warnings.append(f"Warning:  Invalid first endpoint of segment {i} in input.")
