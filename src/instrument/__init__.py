@@ -3,8 +3,6 @@
 ``import instrument as triangle`` gives the `triangle` package's API.
 """
 
-from importlib.metadata import PackageNotFoundError, version
-
 from . import purepython
 
 if purepython.requested():
@@ -21,10 +19,7 @@ from .plot import compare, comparev, plot, work
 from .samples import get_data, load, loads, show_data
 from .refine.order import strategies
 
-try:  # the distribution's version, as the package's ``__version__`` is its own
-    __version__ = version("ruppert")
-except PackageNotFoundError:  # running from a source tree that was never installed
-    __version__ = "0+unknown"
+from .version import __version__
 
 __all__ = [
     "Result",
