@@ -60,7 +60,9 @@ def delaunay(
     if method == "incremental":
         return _incremental(xy, work, seed, extra_vertices, extra_triangles, tables)
     n = xy.shape[0]
-    order = np.argsort(xy[:, 0], kind="stable")
+    # without ties in x the order is unique, so numpy's unstable sort (three
+    # times faster at 10^6 points) gives the stable one
+    order = np.argsort(xy[:, 0])
     xs = xy[order, 0]
     if np.any(xs[1:] == xs[:-1]):  # ties in x: sort by (x, y); stable, so equal points keep index order
         order = np.lexsort((xy[:, 1], xy[:, 0]))
