@@ -140,13 +140,6 @@ DEFECTS += [
         lambda c, f, n: f.kind == "size" and read_switches(c.switches).area is not None
         and not read_switches(c.switches).q,
     ),
-    Defect(
-        "angle-above-guarantee",
-        "above Triangle's guaranteed 28.6 degrees, ours leaves triangles below q where Triangle's mesh meets it "
-        "(collinear points at 1e10 under q32.5: 32.09 degrees)",
-        lambda c, f, n: f.kind == "invalid-mesh" and "minimum angle" in f.message
-        and read_switches(c.switches).angle > 28.6,
-    ),
 ]
 
 DEFECTS += [
