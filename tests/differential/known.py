@@ -31,23 +31,6 @@ class Defect:
     matches: Callable[[Case, Failure, dict], bool]
 
 
-def _coords(case: Case) -> np.ndarray:
-    v = np.abs(np.asarray(case.input["vertices"], dtype=np.float64)).ravel()
-    return v[v > 0]
-
-
-def tiny(case: Case) -> bool:
-    """Some nonzero coordinate below 2^-200 (as in the ~1e-300 and mixed-scale inputs)."""
-    v = _coords(case)
-    return bool(v.size and v.min() < 2.0**-200)
-
-
-def huge(case: Case) -> bool:
-    """Some coordinate above 2^200."""
-    v = _coords(case)
-    return bool(v.size and v.max() > 2.0**200)
-
-
 def _kind(f: Failure, *kinds: str) -> bool:
     return f.kind in kinds
 
@@ -139,15 +122,6 @@ DEFECTS += [
         "re-expression spread (4 points, a0.00156: 57 against 51, re-expressions at most 52; cause not isolated)",
         lambda c, f, n: f.kind == "size" and read_switches(c.switches).area is not None
         and not read_switches(c.switches).q,
-    ),
-]
-
-DEFECTS += [
-    Defect(
-        "tiny-mixed-enclosure",
-        "crossing segments in the unit square with endpoints at x ~1e-269 and ~1e-110 enclose another domain "
-        "in ours (area 0.049 against Triangle's 0.0072 under p; cause not isolated)",
-        lambda c, f, n: tiny(c) and not huge(c) and f.kind in ("area-total", "count", "markers"),
     ),
 ]
 
