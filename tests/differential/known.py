@@ -125,20 +125,6 @@ DEFECTS += [
     ),
 ]
 
-DEFECTS += [
-    Defect(
-        "c-extra-segment",
-        "under c, with segments through a corner of the domain reaching outside it, ours lists one subsegment "
-        "(marker 0) more than Triangle (24 against 23; vertices and triangles agree). Cause: the segment "
-        "(-0x1.fd094p-2, -0x1.feb28p-2)-(0x1.fd094p-2, 0x1.feb28p-2) passes exactly through input vertex (0, 0), "
-        "and a crossing vertex at (0.000304, 0.000305) is rounded off its line; ours routes the segment through "
-        "(0, 0) (two subsegments), Triangle joins its far end straight to the rounded crossing vertex, which no "
-        "longer has (0, 0) exactly on the way (one subsegment)",
-        lambda c, f, n: read_switches(c.switches).c and (f.kind, f.detail) in (
-            ("count", "segments"), ("markers", "segment_markers"), ("markers", "edge_markers")),
-    ),
-]
-
 BY_ID = {d.id: d for d in DEFECTS}
 
 
