@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .cases import Case
-from .oracles import Failure, read_switches
+from .oracles import Failure, extreme_scale, read_switches
 
 
 @dataclass(frozen=True)
@@ -122,6 +122,18 @@ DEFECTS += [
         "re-expression spread (4 points, a0.00156: 57 against 51, re-expressions at most 52; cause not isolated)",
         lambda c, f, n: f.kind == "size" and read_switches(c.switches).area is not None
         and not read_switches(c.switches).q,
+    ),
+]
+
+DEFECTS += [
+    Defect(
+        "huge-refinement-precision",
+        "refinement above 2^512 overflows: (1.19e175, 0), (0, 0), (0, 3.96e174) under pqc raise PrecisionError "
+        "(the shell split's length sqrt(dx^2 + dy^2) is inf, the split point NaN; with hypot there the "
+        "refinement runs away to the vertex limit, so other products overflow too); Triangle's quality test "
+        "overflows and keeps the one triangle",
+        lambda c, f, n: extreme_scale(c) and read_switches(c.switches).q
+        and f.kind == "ours-error-where-triangle-meshes" and "PrecisionError" in f.message,
     ),
 ]
 
