@@ -4,19 +4,21 @@ A triangle below the angle bound is a problem unless a small input angle
 explains it: (a) it lies in a wedge between two consecutive segments at a
 vertex narrower than both ``SMALL_INPUT_ANGLE`` and the bound, or (b) its
 shortest edge joins Steiner points at equal distances from a shared segment
-endpoint (Miller, Pav and Walkington; ``MPW_RATIO``).  ``quality_report`` in
+endpoint (Miller, Pav and Walkington; ``MPW_RATIO``).  A point set refined
+without segments has its boundary edges as segments (``_hull_segments``).  ``quality_report`` in
 the package documents the rules in full.
 """
 
 from __future__ import annotations
 
+import copy
 import math
 from collections import defaultdict
 
 import numpy as np
 
 from .chains import Chains, input_chains, output_chains
-from .view import MeshView, Problems, segment_keys
+from .view import Edges, MeshView, Problems, int_array, segment_keys
 
 
 #: Input angles (degrees) below which rule (a) of the angle exemption applies.
@@ -125,6 +127,27 @@ def _mpw_table(m: MeshView, chains: Chains):
     return table
 
 
+def _hull_segments(m: MeshView) -> MeshView:
+    """``m`` with the boundary edges of its good triangles as its subsegments.
+
+    A point set refined without ``-p`` or ``-c`` has no segments in its input
+    or output, but Triangle (and ours) makes the boundary edges subsegments
+    before refining, and the Miller-Pav-Walkington exemption applies to
+    Steiner points on them: two hull edges meeting at J at any angle (the
+    rule does not measure it) leave a triangle whose shortest edge joins
+    points on the same shell around J.  Without these segments such a
+    triangle would look unexplained."""
+    e = Edges(m)
+    good = m.good[e.tri]
+    twin_good = np.zeros(len(e.tri), dtype=bool)
+    has = e.twin >= 0
+    twin_good[has] = m.good[e.tri[e.twin[has]]]
+    rim = good & ~twin_good
+    view = copy.copy(m)
+    view.S = np.stack([e.a[rim], e.b[rim]], axis=1).astype(np.int64)
+    return view
+
+
 def classify_angles(m: MeshView, pslg, min_angle, probs: Problems | None, pslg_chains=None):
     """Angles of the good triangles; bad and exempt triangle indices."""
     idx = np.flatnonzero(m.good)
@@ -135,6 +158,8 @@ def classify_angles(m: MeshView, pslg, min_angle, probs: Problems | None, pslg_c
         badpos = np.flatnonzero(mins < min_angle * (1.0 - ANGLE_RTOL))
         if badpos.size:
             sink = probs if probs is not None else Problems()
+            in_segs = int_array(pslg.get("segments", np.zeros((0, 2))), 2) if pslg is not None else ()
+            seg_view = _hull_segments(m) if not len(m.S) and not len(in_segs) else m
             chains = Chains()
             if pslg is not None:
                 iv = np.asarray(pslg.get("vertices", np.zeros((0, 2))), dtype=np.float64)
@@ -142,11 +167,11 @@ def classify_angles(m: MeshView, pslg, min_angle, probs: Problems | None, pslg_c
                 if pslg_chains is None:
                     pslg_chains = input_chains(m, pslg, Problems())
                 chains.chains.extend(pslg_chains)
-            output_chains(m, chains)
+            output_chains(seg_view, chains)
             wedges = _wedges(m, chains, min(SMALL_INPUT_ANGLE, min_angle))
             mpw = _mpw_table(m, chains)
-            ok, _ = segment_keys(m)
-            subsegs = {(min(a, b), max(a, b)) for a, b in m.S[ok].tolist()}
+            ok, _ = segment_keys(seg_view)
+            subsegs = {(min(a, b), max(a, b)) for a, b in seg_view.S[ok].tolist()}
             for pos in badpos:
                 t = int(idx[pos])
                 (exempt_t if _exempt(m, t, ang[pos], chains, wedges, mpw, subsegs) else bad_t).append(t)

@@ -45,6 +45,7 @@ from cython.cimports.instrument.core.predicates import orient2d
 from cython.cimports.instrument.core.scaling import unit_scale
 from cython.cimports.instrument.core.status import DONE, FAILED, NEED_BUFFER, NEED_ROOM
 from cython.cimports.instrument.core.subsegments import Subsegments, new_record
+from cython.cimports.instrument.segments.crossing import crossing_point
 from cython.cimports.instrument.counters import C_ORIENT, C_STEINER
 from cython.cimports.libc.math import fabs, sqrt
 
@@ -529,12 +530,14 @@ def _split_at_crossing(
     """Make a vertex where segment ``a b`` crosses subsegment edge ``c``.
 
     Returns ``(v, reroute)``, ``v = -1`` if the tables are full.  The
-    crossing point is rounded, so it is inserted where it actually lies:
+    crossing point is the exact one rounded once (crossing.py), so it is
+    inserted where it actually lies:
     exactly on ``c`` it splits ``c``; anywhere else (or on an existing
     vertex) ``reroute`` is True and the caller re-routes ``c`` through it.
     The mesh stays a valid triangulation either way; forcing a rounded
     point onto ``c`` could fold it.  A point within a few units in the last
-    place of one of the four endpoints is taken to be that endpoint: a
+    place of one of the four endpoints (or of a corner of the triangle it
+    falls in, or of the apexes of ``c``) is taken to be that vertex: a
     crossing vertex made earlier is only nearly on its lines, so later
     segments through the same point would otherwise cross them again a
     rounding error away, for ever.
@@ -547,12 +550,12 @@ def _split_at_crossing(
     t: cython.double = crossing_parameter(
         xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[right, 0], xy[right, 1], xy[left, 0], xy[left, 1]
     )
-    px: cython.double = xy[right, 0] + t * (xy[left, 0] - xy[right, 0])
-    py: cython.double = xy[right, 1] + t * (xy[left, 1] - xy[right, 1])
-    if not (fabs(px) <= 1.7976931348623157e308 and fabs(py) <= 1.7976931348623157e308):
-        # the difference overflowed (coordinates of both signs near DBL_MAX)
-        px = (1.0 - t) * xy[right, 0] + t * xy[left, 0]
-        py = (1.0 - t) * xy[right, 1] + t * xy[left, 1]
+    # the exact crossing rounded once (t above only for the attributes)
+    px: cython.double
+    py: cython.double
+    px, py = crossing_point(
+        xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[right, 0], xy[right, 1], xy[left, 0], xy[left, 1]
+    )
     tol: cython.double = 2.0**-48 * (fabs(px) + fabs(py)) + 1e-300
     if _near(xy, right, px, py, tol):
         return right, False
@@ -570,6 +573,20 @@ def _split_at_crossing(
     if status != LOC_INSIDE and status != LOC_ON_EDGE:
         # rounded off the mesh (c is on the boundary): use c's nearer end
         return (right if t < 0.5 else left), False
+    # as near another vertex (one nearly on both lines: a corner of the
+    # triangle it falls in, or across c from it): that vertex
+    near_v: Index
+    for k in range(5):
+        if k < 3:
+            near_v = m.corner[3 * (e // 3) + k]
+        elif k == 3:
+            near_v = m.corner[c]
+        elif m.twin[c] != NO_EDGE:
+            near_v = m.corner[m.twin[c]]
+        else:
+            break
+        if _near(xy, near_v, px, py, tol):
+            return near_v, True
     half: Index = new_record(segs, segs.marker[r], segs.source[r], segs.ends[r, 0], segs.ends[r, 1])
     if half < 0:
         return -1, False
