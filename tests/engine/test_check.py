@@ -16,6 +16,7 @@ import triangle
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+import instrument
 from instrument.check import (
     check_mesh,
     incircle_exact,
@@ -608,3 +609,15 @@ def test_speed_100k_triangles():
     print(f"check_mesh on {len(r['triangles'])} triangles: {elapsed:.2f} s")
     assert p == []
     assert elapsed < 5.0
+
+
+def test_a_vertex_a_hair_from_a_segment_end_does_not_fake_a_gap():
+    """A segment touching the unit square only at its corner (1, 0), beside an
+    input vertex at (1, 1e-50) on the square's side: both within the
+    checker's tolerance of the segment's line and at the same rounded position
+    along it.  Their exact order decides the pieces; Triangle's mesh and ours
+    (the same triangles) are valid."""
+    v = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0], [1.5, 0.5], [0.5, -0.5], [1.0, 1e-50]])
+    pslg = {"vertices": v, "segments": np.array([[0, 1], [1, 2], [2, 3], [3, 0], [4, 5]])}
+    assert check_mesh(instrument.triangulate(pslg, "pQ"), pslg) == []
+    assert check_mesh(triangle.triangulate(pslg, "pQ"), pslg) == []

@@ -46,6 +46,33 @@ def _on_line(u, v, x) -> bool:
     return orient_exact(u, v, x) == 0
 
 
+def _exact_ranks(node_seg, node_t, node_xy, U, W) -> np.ndarray:
+    """A tie-break for nodes of one segment whose rounded positions ``t`` are
+    equal: their exact order along the segment (Fractions, only for the tied
+    nodes).  Without it two vertices a hair apart (an input vertex at (1,
+    1e-50) beside the segment's own vertex at (1, 0)) could come in the wrong
+    order, and the piece between the wrong pair would seem to cross the mesh."""
+    rank = np.zeros(len(node_t), dtype=np.int64)
+    finite = np.isfinite(node_t)
+    key = np.lexsort((node_t, node_seg))
+    same = (node_seg[key][1:] == node_seg[key][:-1]) & (node_t[key][1:] == node_t[key][:-1]) & finite[key][1:]
+    if not same.any():
+        return rank
+    from fractions import Fraction
+
+    groups = defaultdict(list)
+    for i in np.flatnonzero(same):
+        for j in (key[i], key[i + 1]):
+            groups[(int(node_seg[j]), float(node_t[j]))].append(int(j))
+    for (k, _), members in groups.items():
+        ux, uy = (Fraction(c) for c in U[k])
+        dx, dy = Fraction(W[k][0]) - ux, Fraction(W[k][1]) - uy
+        exact = sorted(set(members), key=lambda j: (Fraction(node_xy[j][0]) - ux) * dx + (Fraction(node_xy[j][1]) - uy) * dy)
+        for r, j in enumerate(exact):
+            rank[j] = r
+    return rank
+
+
 class Chains:
     """Segments as chains (J0, J1, interior output vertices)."""
 
@@ -135,7 +162,8 @@ def input_chains(m: MeshView, pslg, probs: Problems) -> list:
     node_t = np.concatenate([np.full(ns, -np.inf), t, np.full(ns, np.inf)])
     node_id = np.concatenate([uid, ids[pp], wid])
     node_xy = np.concatenate([U, X[pp], W])
-    order = np.lexsort((node_t, node_seg))
+    node_rank = _exact_ranks(node_seg, node_t, node_xy, U, W)
+    order = np.lexsort((node_rank, node_t, node_seg))
     node_seg, node_id, node_xy = node_seg[order], node_id[order], node_xy[order]
     nn = len(order)
     # Piece i joins node i and node i + 1 of the same segment.  A subsegment
