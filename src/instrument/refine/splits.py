@@ -25,7 +25,7 @@ import numpy as np
 import cython
 from cython.cimports.instrument.core.insert import flip
 from cython.cimports.instrument.core.locate import LOC_BLOCKED, LOC_FAILED, LOC_INSIDE, LOC_ON_EDGE, LOC_ON_VERTEX, line_walk, precise_walk
-from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, V_FREE, V_SEGMENT, Index, Mesh, kill_triangle, lnext, lprev
+from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, V_FREE, V_SEGMENT, Index, Mesh, is_ghost, kill_triangle, lnext, lprev
 from cython.cimports.instrument.core.navigate import find_edge, remember_corners
 from cython.cimports.instrument.core.predicates import orient2d
 from cython.cimports.instrument.core.scaling import unit_scale
@@ -33,6 +33,7 @@ from cython.cimports.instrument.core.status import DONE, NEED_ROOM, PAUSE, PRECI
 from cython.cimports.instrument.core.subsegments import Subsegments, new_record
 from cython.cimports.instrument.counters import (
     C_CIRCUMCENTER,
+    C_ORIENT,
     C_DELETED,
     C_DUPLICATE,
     C_QUEUE_POP,
@@ -236,7 +237,7 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
     split: cython.double = 0.5
     length: cython.double
     p2: cython.double
-    big: cython.double
+    big: cython.double = 0.0
     f: cython.double
     if acute0 or acute1:
         # squares overflow beyond 2^511 and lose every bit below 2^-537 (a
@@ -259,10 +260,13 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
             split = 1.0 - split
     px: cython.double = xy[e0, 0] + split * ex
     py: cython.double = xy[e0, 1] + split * ey
-    # one correction toward the segment's line
+    # one correction toward the segment's line (not out of range, where the
+    # squared length is subnormal or infinite and orient2d's value saturates:
+    # at 1e-162 their quotient moved the point onto an end)
     den: cython.double = ex * ex + ey * ey
     mult: cython.double = orient2d(xy[e0, 0], xy[e0, 1], xy[e1, 0], xy[e1, 1], px, py) / den
-    if mult != 0.0 and den != 0.0 and mult == mult:
+    big = max(fabs(ex), fabs(ey))
+    if mult != 0.0 and den != 0.0 and mult == mult and big <= 2.0**480 and big >= 2.0**-480:
         px += mult * ey
         py += mult * -ex
     if (px == xy[o, 0] and py == xy[o, 1]) or (px == xy[d, 0] and py == xy[d, 1]):
@@ -374,6 +378,31 @@ def split_encroached(r: Refiner, m: Mesh, segs: Subsegments, triangles: cython.b
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
+def _start_edge(m: Mesh, h: Index, px: cython.double, py: cython.double) -> tuple[Index, cython.int, Index]:
+    """Where a walk to (px, py) from handle ``h``'s triangle starts, by
+    exact orientations: (an edge the point is left of, LOC_FAILED, -1), or
+    (-, LOC_BLOCKED, the subsegment or boundary edge the point is across)."""
+    xy = m.xy
+    k: Index = h
+    o: Index
+    d: Index
+    tw: Index
+    for _ in range(3):
+        o = m.corner[lnext(k)]
+        d = m.corner[lprev(k)]
+        m.work[C_ORIENT] += 1
+        if orient2d(xy[o, 0], xy[o, 1], xy[d, 0], xy[d, 1], px, py) < 0.0:
+            tw = m.twin[k]
+            if m.seg[k] != NO_SEG or tw == NO_EDGE or is_ghost(m, tw // 3):
+                return h, LOC_BLOCKED, k
+            return tw, LOC_FAILED, -1
+        k = lnext(k)
+    return h, LOC_FAILED, -1
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
 def _collapsed(m: Mesh, h: Index, px: cython.double, py: cython.double) -> Index:
     """The shortest edge of handle ``h``'s triangle if the point (px, py)
     is not strictly on the triangle's side of it, else -1.
@@ -446,7 +475,16 @@ def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cyth
     e: Index
     # Triangle's walk from the handle, or from the edge before it when that
     # puts the point on the inner side of the first edge
-    status, e = precise_walk(m, lprev(h) if eta < xi else h, px, py, m.stamp.shape[0] + 64)
+    start: Index = lprev(h) if eta < xi else h
+    status = LOC_FAILED
+    e = -1
+    if not (fabs(xi) <= 1.7976931348623157e308 and fabs(eta) <= 1.7976931348623157e308):
+        # NaN parameters (a needle spanning 1e-304 .. 1e300): the walk needs
+        # the point left of its first edge, and an off-center can lie across
+        # any edge of its triangle, even a subsegment (outside the domain)
+        start, status, e = _start_edge(m, h, px, py)
+    if status != LOC_BLOCKED:
+        status, e = precise_walk(m, start, px, py, m.stamp.shape[0] + 64)
     if status == LOC_FAILED:
         status, e = line_walk(m, t, px, py, 4 * m.stamp.shape[0] + 64)
     steps: cython.longlong = m.work[C_WALK] - steps0
