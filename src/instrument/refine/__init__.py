@@ -301,13 +301,22 @@ def finish(ms: MeshState, r: Refiner, user: Callable | None = None, guard: Calla
         if status == PAUSE:  # back in Python now and then, so Ctrl-C works
             continue
         if status == PRECISION:
-            raise _precision_error(m, r.error_org, r.error_dest)
+            raise _precision_error(m, r.error_org, r.error_dest, r.error_apex)
         grow_refiner(ms, r)
     ms.dead = np.flatnonzero(np.asarray(m.vtype)[: m.nvert] == V_DEAD)
 
 
-def _precision_error(m, a: int, b: int) -> PrecisionError:
+def _precision_error(m, a: int, b: int, apex: int = -1) -> PrecisionError:
     xy = np.asarray(m.xy)
+    if apex >= 0:  # a bad triangle whose split point rounds onto its shortest edge
+        return PrecisionError(
+            f"Ran out of precision at ({xy[a, 0]:.12g}, {xy[a, 1]:.12g}).\n"
+            f"I attempted to split a bad triangle whose shortest edge is too short\n"
+            f"  beside its coordinates for a new vertex to be placed off that edge\n"
+            f"  in floating point arithmetic (the coordinates span too many orders of magnitude).\n"
+            f"  (edge ({xy[a, 0]:.12g}, {xy[a, 1]:.12g}) to ({xy[b, 0]:.12g}, {xy[b, 1]:.12g}),"
+            f" third vertex ({xy[apex, 0]:.12g}, {xy[apex, 1]:.12g}))"
+        )
     return PrecisionError(
         f"Ran out of precision at ({xy[a, 0]:.12g}, {xy[a, 1]:.12g}).\n"
         f"I attempted to split a segment to a smaller size than\n"

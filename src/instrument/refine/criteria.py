@@ -215,6 +215,12 @@ def steiner_point(r: Refiner, m: Mesh, h: Index) -> tuple[cython.double, cython.
     # roundings, as no product leaves the range then) and the offset
     # scaled back at the end; in range f is 1 and nothing changes.
     f: cython.double = 1.0
+    xdo0: cython.double = xdo  # unscaled, for an off-center (see below)
+    ydo0: cython.double = ydo
+    xao0: cython.double = xao
+    yao0: cython.double = yao
+    xda0: cython.double = xda
+    yda0: cython.double = yda
     big: cython.double = max(max(fabs(xdo), fabs(ydo)), max(fabs(xao), fabs(yao)))
     if not (big <= 2.0**160 and big >= 2.0**-160) and big > 0.0:
         f = unit_scale(big)
@@ -240,27 +246,50 @@ def steiner_point(r: Refiner, m: Mesh, h: Index) -> tuple[cython.double, cython.
     fy: cython.double
     ex: cython.double
     ey: cython.double
+    which: cython.int = 0  # the off-center's edge: 1 o-d, 2 o-a, 3 d-a
+    # A needle whose circumcenter is beyond the doubles (its area vanished
+    # beside its edges: 0 at 1e-302 from an axis 1e300 long) gives NaN here;
+    # its off-center, half an edge from that edge, is closer than any point
+    # at infinity.  (Left NaN, the split was skipped as a duplicate and the
+    # needle stayed, a bad triangle in the mesh and in every later cavity.)
+    far: cython.bint = dx != dx or dy != dy
     if r.cfg.offcenter and c > 0.0:
         if dodist < aodist and dodist < dadist:
             fx = 0.5 * xdo - c * ydo
             fy = 0.5 * ydo + c * xdo
-            if fx * fx + fy * fy < dx * dx + dy * dy:
-                dx, dy, off = fx, fy, True
+            if fx * fx + fy * fy < dx * dx + dy * dy or far:
+                dx, dy, off, which = fx, fy, True, 1
         elif aodist < dadist:
             fx = 0.5 * xao + c * yao
             fy = 0.5 * yao - c * xao
-            if fx * fx + fy * fy < dx * dx + dy * dy:
-                dx, dy, off = fx, fy, True
+            if fx * fx + fy * fy < dx * dx + dy * dy or far:
+                dx, dy, off, which = fx, fy, True, 2
         else:
             ex = -xda
             ey = -yda
             fx = 0.5 * ex - c * ey
             fy = 0.5 * ey + c * ex
-            if fx * fx + fy * fy < (dx - xdo) * (dx - xdo) + (dy - ydo) * (dy - ydo):
-                dx, dy, off = xdo + fx, ydo + fy, True
+            if fx * fx + fy * fy < (dx - xdo) * (dx - xdo) + (dy - ydo) * (dy - ydo) or far:
+                dx, dy, off, which = xdo + fx, ydo + fy, True, 3
     xi: cython.double = (yao * dx - xao * dy) * (2.0 * denom)
     eta: cython.double = (xdo * dy - ydo * dx) * (2.0 * denom)
-    if f != 1.0:
+    if f != 1.0 and off:
+        # from the unscaled edge (degree 1: nothing overflows): an edge that
+        # is tiny beside the triangle's longest vanishes when scaled, and its
+        # off-center would land on its end (1e-303 edges under 1e300 ones);
+        # where nothing vanished the result is the scaled one's, bit for bit
+        # (but for the edge d-a, see there)
+        if which == 1:
+            dx = 0.5 * xdo0 - c * ydo0
+            dy = 0.5 * ydo0 + c * xdo0
+        elif which == 2:
+            dx = 0.5 * xao0 + c * yao0
+            dy = 0.5 * yao0 - c * xao0
+        else:
+            # from d itself: with o far from d (1e226 against 1e64), o +
+            # ((d - o) + offset) loses the offset, or d (1e299 against 1e-302)
+            return xy[d, 0] + (0.5 * -xda0 - c * -yda0), xy[d, 1] + (0.5 * -yda0 + c * -xda0), xi, eta, off
+    elif f != 1.0:
         dx = dx / f
         dy = dy / f
     return ox + dx, oy + dy, xi, eta, off

@@ -25,13 +25,15 @@ import numpy as np
 import cython
 from cython.cimports.instrument.core.insert import flip
 from cython.cimports.instrument.core.locate import LOC_BLOCKED, LOC_FAILED, LOC_INSIDE, LOC_ON_EDGE, LOC_ON_VERTEX, line_walk, precise_walk
-from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, V_FREE, V_SEGMENT, Index, Mesh, kill_triangle, lnext, lprev
+from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, V_FREE, V_SEGMENT, Index, Mesh, is_ghost, kill_triangle, lnext, lprev
 from cython.cimports.instrument.core.navigate import find_edge, remember_corners
 from cython.cimports.instrument.core.predicates import orient2d
+from cython.cimports.instrument.core.scaling import unit_scale
 from cython.cimports.instrument.core.status import DONE, NEED_ROOM, PAUSE, PRECISION
 from cython.cimports.instrument.core.subsegments import Subsegments, new_record
 from cython.cimports.instrument.counters import (
     C_CIRCUMCENTER,
+    C_ORIENT,
     C_DELETED,
     C_DUPLICATE,
     C_QUEUE_POP,
@@ -58,7 +60,7 @@ from cython.cimports.instrument.refine.deletion import chew_delete
 from cython.cimports.instrument.refine.encroach import check_subsegment, enc_edge, enc_free, enc_push, in_lens, may_split, queue_side
 from cython.cimports.instrument.refine.queues import queue_clear, queue_compact, queue_pop, queue_push, queue_used
 from cython.cimports.instrument.refine.state import T_CIRCUMCENTER, T_OFFCENTER, T_REJECTED, T_SEGMENT, Refiner, step_begins, step_undone, trace_full, trace_row
-from cython.cimports.libc.math import fabs, sqrt
+from cython.cimports.libc.math import fabs, hypot, sqrt
 
 #: bad triangles taken between two PAUSEs
 PAUSE_EVERY = cython.declare(Index, 1 << 14)
@@ -68,6 +70,10 @@ PAUSE_EVERY = cython.declare(Index, 1 << 14)
 #: the last place, where split points that were moved onto the line once and
 #: printed with 17 digits land.
 ON_SEGMENT = cython.declare(cython.double, 2.0**-50)
+
+#: ... and its distance from the line is below this fraction of its distance
+#: from the nearer end (an angle below 2^-30 radians seen from that end).
+ALONG_SEGMENT = cython.declare(cython.double, 2.0**-30)
 
 
 @cython.cfunc
@@ -83,7 +89,18 @@ def _on_subsegment(m: Mesh, a: Index, b: Index, c: Index) -> cython.bint:
     scale: cython.double = max(fabs(xy[a, 0]), fabs(xy[a, 1]), fabs(xy[b, 0]), fabs(xy[b, 1]), fabs(xy[c, 0]), fabs(xy[c, 1]))
     cross: cython.double = ex * cy - ey * cx
     dot: cython.double = ex * cx + ey * cy
-    return fabs(cross) <= ON_SEGMENT * scale * sqrt(ex * ex + ey * ey) and 0.0 < dot < ex * ex + ey * ey
+    if not (fabs(cross) <= ON_SEGMENT * scale * sqrt(ex * ex + ey * ey) and 0.0 < dot < ex * ex + ey * ey):
+        return False
+    # ... and near the line next to its own distance from the ends: the units
+    # in the last place above are of the largest coordinate, which at mixed
+    # scales (ends at 1e300 and 0, c at 2e-302) admit a vertex at 45 degrees
+    # to the segment (and squares that overflow admit anything); the split
+    # at it made a subsegment off the segment that refinement chased forever.
+    # The distance comes from the exact orient2d and the lengths from hypot,
+    # which neither overflow nor vanish.
+    dist: cython.double = fabs(orient2d(xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[c, 0], xy[c, 1])) / hypot(ex, ey)
+    near: cython.double = min(hypot(cx, cy), hypot(xy[c, 0] - xy[b, 0], xy[c, 1] - xy[b, 1]))
+    return dist <= ALONG_SEGMENT * near
 
 
 @cython.cfunc
@@ -220,8 +237,18 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
     split: cython.double = 0.5
     length: cython.double
     p2: cython.double
+    big: cython.double = 0.0
+    f: cython.double
     if acute0 or acute1:
-        length = sqrt(ex * ex + ey * ey)
+        # squares overflow beyond 2^511 and lose every bit below 2^-537 (a
+        # zero length made the shell loop run p2 down to 0 and split = NaN):
+        # out of range, measure the scaled vector (exact powers of two)
+        big = max(fabs(ex), fabs(ey))
+        if big <= 2.0**480 and big >= 2.0**-480:
+            length = sqrt(ex * ex + ey * ey)
+        else:
+            f = unit_scale(big)
+            length = sqrt((ex * f) * (ex * f) + (ey * f) * (ey * f)) / f
         p2 = 1.0
         while length > 3.0 * p2:
             p2 *= 2.0
@@ -233,10 +260,13 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
             split = 1.0 - split
     px: cython.double = xy[e0, 0] + split * ex
     py: cython.double = xy[e0, 1] + split * ey
-    # one correction toward the segment's line
+    # one correction toward the segment's line (not out of range, where the
+    # squared length is subnormal or infinite and orient2d's value saturates:
+    # at 1e-162 their quotient moved the point onto an end)
     den: cython.double = ex * ex + ey * ey
     mult: cython.double = orient2d(xy[e0, 0], xy[e0, 1], xy[e1, 0], xy[e1, 1], px, py) / den
-    if mult != 0.0 and den != 0.0 and mult == mult:
+    big = max(fabs(ex), fabs(ey))
+    if mult != 0.0 and den != 0.0 and mult == mult and big <= 2.0**480 and big >= 2.0**-480:
         px += mult * ey
         py += mult * -ex
     if (px == xy[o, 0] and py == xy[o, 1]) or (px == xy[d, 0] and py == xy[d, 1]):
@@ -345,6 +375,73 @@ def split_encroached(r: Refiner, m: Mesh, segs: Subsegments, triangles: cython.b
     return DONE
 
 
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _start_edge(m: Mesh, h: Index, px: cython.double, py: cython.double) -> tuple[Index, cython.int, Index]:
+    """Where a walk to (px, py) from handle ``h``'s triangle starts, by
+    exact orientations: (an edge the point is left of, LOC_FAILED, -1), or
+    (-, LOC_BLOCKED, the subsegment or boundary edge the point is across)."""
+    xy = m.xy
+    k: Index = h
+    o: Index
+    d: Index
+    tw: Index
+    for _ in range(3):
+        o = m.corner[lnext(k)]
+        d = m.corner[lprev(k)]
+        m.work[C_ORIENT] += 1
+        if orient2d(xy[o, 0], xy[o, 1], xy[d, 0], xy[d, 1], px, py) < 0.0:
+            tw = m.twin[k]
+            if m.seg[k] != NO_SEG or tw == NO_EDGE or is_ghost(m, tw // 3):
+                return h, LOC_BLOCKED, k
+            return tw, LOC_FAILED, -1
+        k = lnext(k)
+    return h, LOC_FAILED, -1
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _collapsed(m: Mesh, h: Index, px: cython.double, py: cython.double) -> Index:
+    """The shortest edge of handle ``h``'s triangle if the point (px, py)
+    is not strictly on the triangle's side of it, else -1.
+
+    The angle opposite the shortest edge is the smallest, below 60 degrees,
+    so the circumcenter and every off-center (on the edge's bisector, between
+    its midpoint and the circumcenter) lie strictly on the triangle's side.
+    A point that is not has been rounded there: the edge is so short next to
+    its coordinates (4e-13 long at y = 1e180, where the next double is 1e164
+    away) that the bisector's offset is lost, the point lands on the edge
+    itself, and the split leaves two triangles of the same shape, forever.
+    Edges are compared as scaled vectors (powers of two), so that squares
+    neither overflow nor vanish beside the triangle's longest edge."""
+    xy = m.xy
+    a: Index = m.corner[h]  # apex
+    b: Index = m.corner[lnext(h)]  # org
+    c: Index = m.corner[lprev(h)]  # dest
+    bcx: cython.double = xy[c, 0] - xy[b, 0]
+    bcy: cython.double = xy[c, 1] - xy[b, 1]
+    cax: cython.double = xy[a, 0] - xy[c, 0]
+    cay: cython.double = xy[a, 1] - xy[c, 1]
+    abx: cython.double = xy[b, 0] - xy[a, 0]
+    aby: cython.double = xy[b, 1] - xy[a, 1]
+    f: cython.double = unit_scale(max(max(max(fabs(bcx), fabs(bcy)), max(fabs(cax), fabs(cay))), max(fabs(abx), fabs(aby))))
+    la: cython.double = (bcx * f) * (bcx * f) + (bcy * f) * (bcy * f)  # opposite a: edge h
+    lb: cython.double = (cax * f) * (cax * f) + (cay * f) * (cay * f)  # opposite b: edge lnext(h)
+    lc: cython.double = (abx * f) * (abx * f) + (aby * f) * (aby * f)  # opposite c: edge lprev(h)
+    edge: Index = h
+    if lb < la and lb <= lc:
+        edge = lnext(h)
+    elif lc < la and lc < lb:
+        edge = lprev(h)
+    u: Index = m.corner[lnext(edge)]
+    v: Index = m.corner[lprev(edge)]
+    if orient2d(xy[u, 0], xy[u, 1], xy[v, 0], xy[v, 1], px, py) > 0.0:
+        return -1
+    return edge
+
+
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
@@ -378,10 +475,31 @@ def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cyth
     e: Index
     # Triangle's walk from the handle, or from the edge before it when that
     # puts the point on the inner side of the first edge
-    status, e = precise_walk(m, lprev(h) if eta < xi else h, px, py, m.stamp.shape[0] + 64)
+    start: Index = lprev(h) if eta < xi else h
+    status = LOC_FAILED
+    e = -1
+    if not (fabs(xi) <= 1.7976931348623157e308 and fabs(eta) <= 1.7976931348623157e308):
+        # NaN parameters (a needle spanning 1e-304 .. 1e300): the walk needs
+        # the point left of its first edge, and an off-center can lie across
+        # any edge of its triangle, even a subsegment (outside the domain)
+        start, status, e = _start_edge(m, h, px, py)
+    if status != LOC_BLOCKED:
+        status, e = precise_walk(m, start, px, py, m.stamp.shape[0] + 64)
     if status == LOC_FAILED:
         status, e = line_walk(m, t, px, py, 4 * m.stamp.shape[0] + 64)
     steps: cython.longlong = m.work[C_WALK] - steps0
+    # outside its own triangle (rare): make sure rounding has not put the
+    # point on or behind the shortest edge, which no off-center or
+    # circumcenter is (see _collapsed); such a split makes the same bad
+    # triangle again, smaller, without end
+    bad_edge: Index = -1
+    if not (status == LOC_INSIDE and e // 3 == t):
+        bad_edge = _collapsed(m, h, px, py)
+    if bad_edge >= 0:
+        r.error_org = m.corner[lnext(bad_edge)]
+        r.error_dest = m.corner[lprev(bad_edge)]
+        r.error_apex = m.corner[bad_edge]
+        return PRECISION
     if status == LOC_BLOCKED or (status == LOC_ON_EDGE and m.seg[e] != NO_SEG):
         if m.seg[e] != NO_SEG and may_split(r, m, e):
             if r.enc_live + 1 > r.enc.shape[0]:

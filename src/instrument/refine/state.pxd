@@ -34,6 +34,7 @@ cdef class Refiner:
     cdef public Index need           # with NEED_ROOM: the triangles (and queue entries) one step needs
     cdef public Index error_org      # with PRECISION: the subsegment's end vertices
     cdef public Index error_dest
+    cdef public Index error_apex     # with PRECISION from a bad triangle: its third vertex (else -1)
     cdef public long long[::1] work_begun  # the work counters as the current step began (step_begins)
     # the bad-triangle queue: a heap, or Triangle's buckets (queues.py)
     cdef public double[::1] hkey     # key (smaller first)

@@ -67,6 +67,7 @@ class Refiner:
         self.need = 0
         self.error_org = -1
         self.error_dest = -1
+        self.error_apex = -1
         self.work_begun = np.zeros(len(NAMES), dtype=np.int64)
         self.hkey = np.zeros(queue)
         self.hseq = np.zeros(queue, dtype=np.int64)
