@@ -13,7 +13,7 @@ is pooled and split instead.
 then (so that Python can see Ctrl-C and report progress), ``PRECISION``
 when a subsegment is too short to split, and ``DONE``.
 
-(About 500 lines: the two kinds of split and the loop that orders them share
+(About 670 lines: the two kinds of split and the loop that orders them share
 the room checks and the undo of an interrupted step; the pieces each split
 uses live in cavity, criteria, encroach, deletion and queues.)
 """

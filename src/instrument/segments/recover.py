@@ -27,7 +27,7 @@ follows.
 Every constrained edge piece has its own subsegment record (marker, input
 segment); ``Mesh.seg[e]`` holds the record number on both sides of the edge.
 
-(About 750 lines: the four steps above share the walk along the segment and
+(About 800 lines: the four steps above share the walk along the segment and
 its tolerance, and split across modules they would call each other
 indirectly for every crossed edge.)
 """
