@@ -36,12 +36,6 @@ def _coords(case: Case) -> np.ndarray:
     return v[v > 0]
 
 
-def tiny(case: Case) -> bool:
-    """Some nonzero coordinate below 2^-200 (as in the ~1e-300 and mixed-scale inputs)."""
-    v = _coords(case)
-    return bool(v.size and v.min() < 2.0**-200)
-
-
 def tiny_extent(case: Case) -> bool:
     """Every coordinate below 2^-400 in magnitude."""
     v = np.abs(np.asarray(case.input["vertices"], dtype=np.float64))
@@ -54,30 +48,9 @@ def huge(case: Case) -> bool:
     return bool(v.size and v.max() > 2.0**200)
 
 
-def _kind(f: Failure, *kinds: str) -> bool:
-    return f.kind in kinds
-
-
 def has_duplicates(case: Case) -> bool:
     v = np.asarray(case.input["vertices"], dtype=np.float64)
     return len(np.unique(v, axis=0)) < len(v)
-
-
-def nearly_collinear(case: Case, rtol: float = 1e-9) -> bool:
-    """Two input segments that share an endpoint and turn by a nonzero angle
-    below ``rtol`` radians (or a vertex that close to, but not on, a segment's line)."""
-    v = np.asarray(case.input["vertices"], dtype=np.float64)
-    segs = np.asarray(case.input.get("segments", np.zeros((0, 2))), dtype=np.int64).reshape(-1, 2)
-    if not len(segs) or not np.isfinite(v).all():
-        return False
-    a, b = v[segs[:, 0]], v[segs[:, 1]]
-    d = b - a
-    length = np.hypot(d[:, 0], d[:, 1])
-    with np.errstate(all="ignore"):
-        cross = d[:, None, 0] * (v[None, :, 1] - a[:, None, 1]) - d[:, None, 1] * (v[None, :, 0] - a[:, None, 0])
-        dist = np.abs(cross) / length[:, None]
-        near = (dist > 0) & (dist < rtol * length[:, None])
-    return bool(near.any())
 
 
 def hole_on_segment(case: Case) -> bool:
@@ -94,10 +67,6 @@ def hole_on_segment(case: Case) -> bool:
             if inside and orient_exact(pa, pb, h) == 0:
                 return True
     return False
-
-
-def triangle_empty(notes: dict) -> bool:
-    return ", 0 triangles" in str(notes.get("triangle", ""))
 
 
 DEFECTS = [

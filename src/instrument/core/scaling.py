@@ -5,8 +5,9 @@ The predicates are exact for any finite coordinates, but lengths, areas,
 circumcentres and crossing points are plain floating point: squared lengths
 overflow once coordinates pass about 2^511 (1e154) and lose every bit below
 about 2^-537 (1e-162), where products fall under the subnormal range.  A
-kernel that meets such magnitudes (a cheap range test first, so ordinary
-inputs pay nothing) multiplies its operands by ``unit_scale(m)``, a power of
+kernel that meets such magnitudes (a cheap range test first, written where
+the products are: 2^+-240 for degree-4 products in segment recovery, 2^+-160
+in the quality test, so ordinary inputs pay nothing) multiplies its operands by ``unit_scale(m)``, a power of
 two that brings the largest magnitude ``m`` into [0.5, 1): the scaling is
 exact (barring subnormal operands, which only gain bits), every ratio and
 sign it computes is unchanged, and a point computed in scaled coordinates is
@@ -19,12 +20,6 @@ import math
 
 import cython
 from cython.cimports.libc.math import frexp, ldexp
-
-#: magnitudes in [SAFE_LOW, SAFE_HIGH] can be squared and multiplied by one
-#: another (degree 4 at most) without overflow or underflow to subnormals
-SAFE_LOW = 2.0**-240
-SAFE_HIGH = 2.0**240
-
 
 @cython.ccall
 @cython.nogil
@@ -44,11 +39,3 @@ def unit_scale(m: cython.double) -> cython.double:
         e = -1000
     return ldexp(1.0, -e) if cython.compiled else math.ldexp(1.0, -e)
 
-
-@cython.ccall
-@cython.nogil
-@cython.exceptval(check=False)
-def in_safe_range(m: cython.double) -> cython.bint:
-    """Is the magnitude ``m`` (a largest |coordinate| or |difference|, or 0)
-    in the range where the kernels' products need no rescaling?"""
-    return m == 0.0 or (m >= 2.0**-240 and m <= 2.0**240)

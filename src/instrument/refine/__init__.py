@@ -239,7 +239,7 @@ def _presize(ms: MeshState, o: Options, area: float, limit: int) -> None:
     it at once rather than doubling (and copying) a dozen times (never for
     more than the vertex limit allows).  Otherwise a small mesh gets room
     for four times its vertices: quality alone multiplies them by 1 to 6 on
-    the sample and corpus inputs (la.poly under pq30: 141 to 862), and one
+    the sample and corpus inputs (la.poly under pq30: 141 to 860), and one
     allocation costs less than the five or six doublings it saves; a large
     one grows on demand.  (Results do not depend on the room:
     tests/unit/test_room.py.)"""
