@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import dataclasses
 import logging
+import os
+import time
 from pathlib import Path
 
 import numpy as np
@@ -150,6 +152,16 @@ def test_summary_reads_the_dataset(tmp_path):
     text = (tmp_path / "out" / "summary.md").read_text()
     assert "| pq30 | ours:fifo | 3 | 2 | 1 |" in text
     assert "killed by SIGSEGV" in text and "`z.poly`: FormatError: x" in text
+
+    # a second run with nothing new leaves the summary alone; a new part or input makes it stale
+    assert summary.is_current(path, tmp_path / "out")
+    dataset.write_inputs(path, [{"label": "z.poly", "digest": "", "status": "unreadable", "reason": "FormatError: x"}])
+    assert summary.is_current(path, tmp_path / "out")  # the same catalog: inputs.json untouched
+    later = time.time() + 5
+    dataset.append(path, [fake_row(input="d", engine="triangle")])
+    for part in dataset.parts(path):
+        os.utime(part, (later, later))
+    assert not summary.is_current(path, tmp_path / "out")
 
 
 def test_newest_row_of_a_key_wins_and_compact_keeps_it(tmp_path):

@@ -303,7 +303,6 @@ def main(argv: list[str] | None = None, *, default_corpus: Path | None = None) -
     skipped = [(c["label"], f"unreadable ({c['reason']})") for c in g.catalog if c["status"] != "ok"]
     with tempfile.TemporaryDirectory(prefix="ruppert-compare-") as tmp:
         path = args.dataset or Path(tmp)
-        sweep.warm_here(g)
         try:
             sweep.run(g, path, scheduler=args.scheduler, workers=args.workers, sequential=args.sequential,
                       progress=not args.quiet)

@@ -158,7 +158,10 @@ def write_inputs(path: Path, catalog: list[dict]) -> None:
     path.mkdir(parents=True, exist_ok=True)
     merged = {(c["label"], c["digest"]): c for c in read_inputs(path)}
     merged.update({(c["label"], c["digest"]): c for c in catalog})
-    (path / "inputs.json").write_text(json.dumps(list(merged.values()), indent=1) + "\n")
+    text = json.dumps(list(merged.values()), indent=1) + "\n"
+    f = path / "inputs.json"
+    if not f.exists() or f.read_text() != text:  # unchanged: left alone, so a summary of it stays current
+        f.write_text(text)
 
 
 def read_inputs(path: Path) -> list[dict]:

@@ -212,6 +212,17 @@ def plot_sizes(rows: list[dict], path: Path) -> bool:
     return True
 
 
+def is_current(source: Path, out: Path) -> bool:
+    """Whether ``out`` holds a summary written after the last part of ``source``
+    (with its plots), so that writing it again would give the same files."""
+    parts = dataset.parts(source)
+    files = [Path(out) / name for name in ("summary.md", "summary.csv", "rows.csv")]
+    if not parts or not all(f.exists() for f in files):
+        return False
+    newest_part = max(p.stat().st_mtime for p in parts + [Path(source) / "inputs.json"] if p.exists())
+    return min(f.stat().st_mtime for f in files) >= newest_part
+
+
 def write(source: Path, out: Path, *, plots: bool = True) -> list[Path]:
     """Write the summary of the dataset ``source`` into ``out``; the files written."""
     rows = dataset.read(source)
