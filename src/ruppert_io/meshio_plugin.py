@@ -35,6 +35,7 @@ import numpy as np
 from . import naming, writing
 from .api import read_set, write
 from .errors import DimensionError
+from .meshio_formats import REFERENCES
 
 if TYPE_CHECKING:
     import meshio
@@ -174,7 +175,11 @@ def from_meshio(m: meshio.Mesh) -> dict[str, np.ndarray]:
     Accepts 2-D points, or 3-D points with z = 0.  ``triangle``/``triangle6`` blocks
     become ``triangles`` (6-node ones back in Triangle's order), ``line`` blocks
     ``segments``; ``vertex`` blocks are ignored and other cell types refused
-    (ValueError).  ``triangle:`` data arrays become markers and attributes.
+    (ValueError).  ``triangle:`` data arrays become markers and attributes;
+    without them, the formats' own per-cell references (``gmsh:physical``,
+    ``medit:ref``, ... see ``meshio_formats.REFERENCES``) become segment markers
+    and (when not all 0) the triangles' one attribute, and ``medit:ref`` on the
+    points the vertex markers.
     """
     points = np.asarray(m.points, dtype=np.float64)
     if points.ndim != 2 or points.shape[1] not in (2, 3):
@@ -187,6 +192,8 @@ def from_meshio(m: meshio.Mesh) -> dict[str, np.ndarray]:
     tris, lines = [], []
     tri_data: dict[str, list[np.ndarray]] = {}
     line_marks: list[np.ndarray] = []
+    reference = next((name for name in REFERENCES if name in m.cell_data), None)
+    tri_refs: list[np.ndarray] = []
     for i, block in enumerate(m.cells):
         data = np.asarray(block.data)
         if block.type in ("triangle", "triangle6"):
@@ -194,10 +201,13 @@ def from_meshio(m: meshio.Mesh) -> dict[str, np.ndarray]:
             for name, arrays in m.cell_data.items():
                 if name == f"{PREFIX}max_area" or _ATTR.match(name):
                     tri_data.setdefault(name, []).append(np.asarray(arrays[i]).reshape(-1))
+            if reference:
+                tri_refs.append(np.asarray(m.cell_data[reference][i]).reshape(-1))
         elif block.type == "line":
             lines.append(data)
-            if f"{PREFIX}marker" in m.cell_data:
-                line_marks.append(np.asarray(m.cell_data[f"{PREFIX}marker"][i]).reshape(-1))
+            marks = m.cell_data.get(f"{PREFIX}marker", m.cell_data.get(reference))
+            if marks is not None:
+                line_marks.append(np.asarray(marks[i]).reshape(-1))
         elif block.type != "vertex":
             raise ValueError(f"Triangle meshes have no {block.type!r} cells")
     if tris:
@@ -210,13 +220,16 @@ def from_meshio(m: meshio.Mesh) -> dict[str, np.ndarray]:
             out["triangle_attributes"] = np.column_stack(
                 [np.concatenate(tri_data[k]) for _, k in attrs]
             ).astype(np.float64)
+        elif tri_refs and np.any(np.concatenate(tri_refs)):
+            # a region number (Gmsh's physical tag, Medit's reference) is Triangle's attribute
+            out["triangle_attributes"] = np.concatenate(tri_refs).astype(np.float64).reshape(-1, 1)
         if f"{PREFIX}max_area" in tri_data:
             out["triangle_max_area"] = np.concatenate(tri_data[f"{PREFIX}max_area"]).reshape(-1, 1)
     if lines:
         out["segments"] = np.concatenate(lines).astype(np.int32)
         if line_marks:
             out["segment_markers"] = np.concatenate(line_marks).astype(np.int32).reshape(-1, 1)
-    marks = m.point_data.get(f"{PREFIX}marker")
+    marks = m.point_data.get(f"{PREFIX}marker", m.point_data.get("medit:ref"))
     if marks is not None:
         out["vertex_markers"] = np.asarray(marks).astype(np.int32).reshape(-1, 1)
     attrs = sorted((int(_ATTR.match(k).group(1)), k) for k in m.point_data if _ATTR.match(k))
