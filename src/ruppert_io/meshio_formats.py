@@ -44,6 +44,8 @@ TRIANGLE, TRIANGLE6, LINE = "triangle", "triangle6", "line"
 
 #: Formats a user may name that hold 2-D triangle meshes with their markers.
 ALTERNATIVES = "vtu, xdmf, gmsh, medit or exodus"
+#: ... and 6-node triangles.
+ALTERNATIVES_O2 = "vtu, xdmf, gmsh, med or exodus"
 
 
 @dataclass(frozen=True)
@@ -205,8 +207,7 @@ def mesh_for(mesh: Mapping[str, Any], fmt: Format | str) -> meshio.Mesh:
     generic = to_meshio(mesh, pad_3d=fmt.points_3d)
     kinds = [block.type for block in generic.cells]
     if TRIANGLE6 in kinds and TRIANGLE6 not in fmt.cells:
-        holders = ", ".join(f.name for f in FORMATS.values() if TRIANGLE6 in f.cells and not f.refusal)
-        raise FormatUnavailable(f"{fmt.name} has no 6-node triangles (-o2); write one of {holders}.")
+        raise FormatUnavailable(f"{fmt.name} has no 6-node triangles (-o2); write {ALTERNATIVES_O2} instead.")
     takes = fmt.cells_o2 if TRIANGLE6 in kinds and fmt.cells_o2 is not None else fmt.cells
     keep = [i for i, kind in enumerate(kinds) if kind in takes]
     cells = [(kinds[i], np.asarray(generic.cells[i].data)) for i in keep]

@@ -113,13 +113,22 @@ def _write(filename: str | os.PathLike[str], mesh: meshio.Mesh, **kwargs: Any) -
     write(base, from_meshio(mesh), **kwargs)
 
 
-def to_meshio(mesh: Mapping[str, Any], *, pad_3d: bool = False) -> meshio.Mesh:
+def to_meshio(
+    mesh: Mapping[str, Any], *, pad_3d: bool = False, file_format: str | None = None
+) -> meshio.Mesh:
     """A meshio.Mesh from a dict with the ``triangle`` package's keys.
 
     Triangles become a ``triangle`` (or, with 6 nodes, ``triangle6`` in VTK node
     order) block, segments a ``line`` block.  ``pad_3d`` adds z = 0, which VTU and
-    most other writers want.
+    most other writers want.  ``file_format`` (a meshio format name) shapes the
+    mesh for that writer instead (``meshio_formats.mesh_for``: its cell blocks,
+    points, marker names), so that ``meshio.write(path, m, file_format=...)`` writes
+    it without warnings; ``ruppert_io.write_meshio`` does both.
     """
+    if file_format is not None:
+        from .meshio_formats import mesh_for
+
+        return mesh_for(mesh, file_format)
     xy = writing.get(mesh, "vertices", float, 2)
     if xy is None:
         raise ValueError("the mesh has no 'vertices'")

@@ -27,13 +27,12 @@ from collections.abc import Sequence
 
 from .command import engine_switches, run
 from .errors import CliError
-from .extras import FORMAT_EXTENSIONS, TRACE_HEADER
+from .extras import TRACE_HEADER
 from .texts import LONG_HELP, SHORT_HELP, USAGE, version
 from .verdict import CHECK_TEXT
 
 __all__ = [
     "CHECK_TEXT",
-    "FORMAT_EXTENSIONS",
     "LONG_HELP",
     "SHORT_HELP",
     "TRACE_HEADER",

@@ -66,7 +66,7 @@ def run(argv: list[str], out: TextIO, *, progress_after: float) -> int:
         raise CliError(str(exc)) from None
     if o.r and o.I:
         raise CliError("You cannot use the -I switch when refining a triangulation.")
-    formats = meshio_formats(cmd.long.formats)
+    formats = meshio_formats(cmd.long.formats, o.order)
     engine_kwargs = _engine_kwargs(cmd.long)
     quiet = o.Q
     say = (lambda line="": None) if quiet else (lambda line="": print(line, file=out))

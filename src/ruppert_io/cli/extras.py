@@ -1,7 +1,8 @@
 """The files the long options add to Triangle's: meshio formats, ``--work-json``, ``--trace``.
 
 meshio is imported only when ``--format`` asks for it: it costs a tenth of
-the command's start-up.
+the command's start-up.  What each format holds, and how a mesh is shaped for
+it, is ``ruppert_io.meshio_formats``'s table.
 """
 
 from __future__ import annotations
@@ -14,17 +15,11 @@ from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
-import numpy as np
-
 from .errors import CliError
 
 
 #: Header of a --trace file when the engine returned no trace (no refinement ran).
 TRACE_HEADER = ("kind", "created", "deleted", "walk_steps", "queue_length")
-
-
-#: meshio formats whose extension meshio's table does not give.
-FORMAT_EXTENSIONS = {"gmsh22": ".msh", "gmsh": ".msh", "vtk42": ".vtk", "vtk51": ".vtk"}
 
 
 def write_extras(long, formats, outbase: str, mesh, result, o, say, warn) -> None:
@@ -44,15 +39,15 @@ def write_extras(long, formats, outbase: str, mesh, result, o, say, warn) -> Non
         say(f"Writing {long.trace}.")
 
 
-def meshio_formats(requested: list[str]) -> list[tuple[str, str, str | None]]:
-    """(meshio format, extension, warning) for each --format value."""
-    if not any(f.strip() for value in requested for f in value.split(",")):
-        return []  # without --format meshio stays unloaded (a tenth of the command's start-up)
-    import meshio
+def meshio_formats(requested: list[str], order: int = 1) -> list[tuple[str, str, str | None]]:
+    """(meshio format, extension, warning) for each --format value.
 
-    # meshio names its formats only through its extension table (public);
-    # a format in it that meshio cannot write fails at the write, as a CliError
-    known = sorted({f for fmts in meshio.extension_to_filetypes.values() for f in fmts} | set(FORMAT_EXTENSIONS))
+    Checked before the run, so that a format that cannot hold the mesh (a 3-D
+    one, a missing package, no 6-node triangles for -o2) stops the command
+    before it writes anything.
+    """
+    from ..meshio_formats import FORMATS, TRIANGLE6, FormatUnavailable, check_available, find
+
     chosen = []
     for fmt in (f.strip() for value in requested for f in value.split(",")):
         if not fmt:
@@ -62,33 +57,29 @@ def meshio_formats(requested: list[str]) -> list[tuple[str, str, str | None]]:
             note = ("Warning:  meshio's format 'msh' is ANSYS; writing Gmsh 2.2 "
                     "('gmsh22') instead.")
             fmt = "gmsh22"
-        if fmt not in known:
-            raise CliError(f"Unknown output format {fmt!r}; meshio knows {', '.join(known)}.")
-        ext = FORMAT_EXTENSIONS.get(fmt)
-        if ext is None:
-            ext = next(
-                (e for e, fmts in meshio.extension_to_filetypes.items() if fmt in fmts), f".{fmt}"
-            )
-        chosen.append((fmt, ext, note))
+        try:
+            row = find(fmt)
+            check_available(row)
+        except FormatUnavailable as exc:
+            raise CliError(str(exc)) from None
+        if order == 2 and TRIANGLE6 not in (row.cells_o2 or row.cells):
+            from ..meshio_formats import ALTERNATIVES_O2
+
+            raise CliError(f"{fmt} has no 6-node triangles (-o2); write {ALTERNATIVES_O2} instead.")
+        chosen.append((fmt, FORMATS[fmt].extension, note))
     return chosen
 
 
 def _write_meshio(path: str, mesh: Mapping[str, Any], fmt: str, o) -> None:
-    import meshio
-
-    from ..meshio_plugin import to_meshio
+    from ..meshio_formats import write_meshio
 
     try:
-        m = to_meshio(mesh, pad_3d=fmt != "triangle")
-        if fmt.startswith("gmsh"):  # Gmsh wants tags; without them meshio warns
-            for tag in ("gmsh:physical", "gmsh:geometrical"):
-                m.cell_data.setdefault(tag, [np.zeros(len(b.data), dtype=int) for b in m.cells])
         with contextlib.redirect_stderr(io.StringIO()) if o.Q else contextlib.nullcontext():
-            meshio.write(path, m, file_format=fmt)
+            write_meshio(path, mesh, fmt)
     except OSError as exc:
         raise CliError(f"Cannot create file {exc.filename or path}.") from None
-    except Exception as exc:  # meshio writers raise all sorts
-        raise CliError(f"Cannot write {path} as {fmt}: {exc}") from None
+    except ValueError as exc:  # FormatUnavailable, or a writer's own complaint
+        raise CliError(str(exc)) from None
 
 
 def _write_file(path: str, text: str) -> None:
