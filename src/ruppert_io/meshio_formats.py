@@ -83,6 +83,8 @@ class Format:
     refusal: str | None = None
     #: relative precision of the coordinates it stores (0: exact)
     precision: float = 0.0
+    #: significant digits the coordinates are rounded to first (the writer has no room for more)
+    digits: int | None = None
     #: its reader numbers the vertices differently (a triangle soup, or Gmsh 4.1's entity order)
     renumbers: bool = False
 
@@ -117,7 +119,9 @@ FORMATS: dict[str, Format] = _formats(
     Format("med", ".med", points_3d=False, needs="h5py", reader="med"),
     Format("medit", ".mesh", cells=_TRI_LINE, points_3d=False, named="none",
            ref="medit:ref", ref_points=True, reader="medit"),
-    Format("nastran", ".bdf", named="none", reader="nastran", precision=1e-11),
+    # 16-column fields: meshio prints 12 digits and fails (an assert) when a
+    # negative number then needs 17 columns, so the coordinates get 10 digits
+    Format("nastran", ".bdf", named="none", reader="nastran", precision=1e-9, digits=10),
     Format("netgen", ".vol", points_3d=False, named="none", ref="netgen:index", reader="netgen"),
     Format("neuroglancer", "", cells=_TRI, named="none", reader="neuroglancer", precision=1e-7),
     Format("obj", ".obj", cells=_TRI, named="none", reader="obj"),
@@ -224,6 +228,8 @@ def mesh_for(mesh: Mapping[str, Any], fmt: Format | str) -> meshio.Mesh:
         if fmt.ref_points:
             point_data[fmt.ref] = np.zeros(len(generic.points), np.int64) if marks is None else marks[:, 0]
     points = generic.points
+    if fmt.digits:
+        points = np.array([float(f"{v:.{fmt.digits - 1}e}") for v in points.ravel()]).reshape(points.shape)
     if fmt.gmsh:
         cells, cell_data, point_data = _gmsh_tags(fmt.gmsh, len(points), cells, refs, cell_data, point_data)
     if "gmsh:dim_tags" in point_data:

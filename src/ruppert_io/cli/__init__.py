@@ -1,6 +1,7 @@
 """The ``ruppert`` command line: Triangle 1.6's interface, plus a few long options.
 
     ruppert [-switches] input_file[.node|.poly|.ele|.area] [--long-options]
+    ruppert [-switches] mesh.vtu|mesh.msh|mesh.mesh|... [--long-options]
 
 Triangle-style switch groups (``-pq30a0.1``, ``-p -q30``, before or after the file
 name) are parsed with ``instrument.switches.parse``; the long options with argparse.
@@ -13,6 +14,7 @@ Modules
 ``arguments``  argv split into switches, file name and long options;
 ``command``    one run: read, triangulate, write Triangle's files, report;
 ``outputs``    which of Triangle's files a run writes, and their mesh;
+``meshio_input``  the input from a meshio file (mesh.vtu, outline.msh, ...);
 ``extras``     the long options' files (meshio formats, --work-json, --trace);
 ``verdict``    -C's report of the exact checker;
 ``progress``   the progress display on a terminal;

@@ -22,6 +22,7 @@ from .. import naming, stats
 from ..api import read_set, write
 from ..errors import FormatError
 from ..info import Info
+from . import meshio_input
 from .arguments import split_argv
 from .errors import CliError
 from .extras import meshio_formats, write_extras
@@ -54,10 +55,14 @@ def run(argv: list[str], out: TextIO, *, progress_after: float) -> int:
         out.write(SHORT_HELP)
         return 0
 
-    # File-name rules (reference §1.1), applied in this order.
+    # File-name rules (reference §1.1), applied in this order; a meshio file
+    # (mesh.vtu, outline.msh, ...) is read as it is, its base name named as Triangle's.
     base, implied = cmd.file, ""
+    source = meshio_input.find(cmd.file)
+    if source is not None:
+        base = source.base
     for suffix, letters in ((".node", ""), (".poly", "p"), (".ele", "r"), (".area", "ra ")):
-        if base.endswith(suffix):
+        if source is None and base.endswith(suffix):
             base = base[: -len(suffix)]
             implied += letters
     try:
@@ -73,7 +78,7 @@ def run(argv: list[str], out: TextIO, *, progress_after: float) -> int:
     warn = (lambda line: None) if quiet else (lambda line: print(line, file=sys.stderr))
 
     start = time.perf_counter()
-    data, info = _read_input(o, base)
+    data, info = _read_input(o, base) if source is None else meshio_input.read(source, o)
     for path in info.files:
         say(f"Opening {path}.")
     if o.r:  # reconstruction: an invalid segment is an error, not a warning
