@@ -17,6 +17,7 @@ from __future__ import annotations
 import contextlib
 import io
 import os
+import sys
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -93,11 +94,17 @@ def _read_mesh(source: MeshioInput):
 
     problems = []
     for fmt in source.formats:
+        said = io.StringIO()
         try:
-            with contextlib.redirect_stdout(io.StringIO()):
-                return meshio.read(source.path, file_format=fmt)
+            with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(said):
+                mesh = meshio.read(source.path, file_format=fmt)
         except OSError as exc:
             raise CliError(f"Cannot access file {exc.filename or source.path}.") from None
-        except Exception as exc:  # meshio's readers raise all sorts on a foreign file
-            problems.append(f"as {fmt}: {str(exc).strip() or type(exc).__name__}")
+        except (Exception, SystemExit) as exc:  # readers raise all sorts; some exit
+            text = str(exc).strip() if not isinstance(exc, SystemExit) else ""
+            text = text or " ".join(said.getvalue().split()).removeprefix("Error: ") or type(exc).__name__
+            problems.append(f"as {fmt}: {text}")
+            continue
+        sys.stderr.write(said.getvalue())  # a reader's warnings about a file it did read
+        return mesh
     raise CliError(f"Cannot read {source.path} ({'; '.join(problems)}).")
