@@ -59,6 +59,9 @@ Naming file.poly turns on -p, file.ele turns on -r, and file.area turns on -r
 with per-triangle area bounds read from file.area.  Output goes to the input's
 name with the next iteration number: A.poly gives A.1.node, A.1.ele, A.1.poly;
 refining A.1 gives A.2.*.  Files are numbered from 0 or 1, as the input is.
+The input may also be a mesh file meshio reads (mesh.vtu, mesh.msh,
+mesh.mesh, ...): its points, its line cells as segments with -p, its
+triangles with -r; mesh.vtu gives mesh.1.node, mesh.1.ele.
 
 Switches are single letters; they may be grouped (-pq30a0.1) or separate
 (-p -q30 -a0.1), and may come before or after the file name.  Numbers follow
@@ -117,9 +120,13 @@ Long options (ruppert's own):
     --seed N            Seed of randomised strategies (default 0).
     --work-json PATH    Write the work counters as JSON.
     --trace PATH        Write one CSV row per vertex insertion.
-    --format FMT        Also write the mesh with meshio, e.g. vtu, gmsh22,
-                        xdmf, vtk (comma-separated for several).  "msh" means
-                        Gmsh 2.2 here (meshio would take it as ANSYS).
+    --format FMT        Also write the mesh in meshio's format FMT, e.g.
+                        vtu, gmsh, gmsh22, xdmf, medit, exodus, stl, obj
+                        (comma-separated for several; every format meshio
+                        writes, docs/cli.md lists what each keeps).  "msh"
+                        means Gmsh 2.2 here (meshio would take it as ANSYS).
+                        xdmf, med, h5m and hmf need h5py, exodus netCDF4
+                        (pip install "ruppert[formats]").
     --progress          Show the progress display from the start (on a
                         terminal it appears anyway once a run has taken
                         about a second; never with -Q or when stderr is not
