@@ -100,7 +100,7 @@ def triangulate(
     if o.r:  # the given triangles, as they are
         ms, inp, attrs = reconstruct(tri, inp, o, work, seed)
     else:
-        ms = mesh_input(inp, o, work, seed, threads=threads)
+        ms = mesh_input(inp, o, work, seed, threads=threads, room=refine.starting_room(inp["vertices"].shape[0], o))
     refining = o.quality and ms.mesh.nlive > 0
     if refining and o.r:
         make_delaunay(ms)  # Bowyer-Watson needs a Delaunay mesh

@@ -234,6 +234,21 @@ def _smallest_area_bound(ms: MeshState, o: Options) -> float | None:
     return min(bounds) if bounds else None
 
 
+def starting_room(n_input: int, o: Options) -> int:
+    """Vertices the first stages should reserve beyond the input's ``n_input``
+    (``pipeline.mesh_input``'s ``room``), so that refinement rarely grows
+    the mesh.  Under ``q`` without a fixed area bound a small input ends
+    with up to about seven times its vertices, counting the ones Chew's rule
+    deletes (la.poly under pq30: 141 to 941 vertex rows): room for that from
+    the start saves the copies of every table that ``_presize`` and each
+    later doubling make, which on such inputs cost a tenth of the run.
+    Anything else starts small and ``_presize`` or growth makes the room.
+    (Results do not depend on the room: tests/unit/test_room.py.)"""
+    if o.quality and not o.max_area > 0 and 2 * n_input < SMALL_MESH:
+        return 7 * n_input + 64
+    return 16
+
+
 def _presize(ms: MeshState, o: Options, area: float, limit: int) -> None:
     """Under a fixed area bound the mesh size is predictable: make room for
     it at once rather than doubling (and copying) a dozen times (never for
