@@ -24,6 +24,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..core.mesh import Mesh, relabel_corners, remove_ghosts
+from ..core.filled import filled
 from ..counters import C_DUPLICATE
 from . import divconq, incremental, parallel
 from .distinct import has_x_ties, mark_duplicates
@@ -67,7 +68,7 @@ def delaunay(
     order = np.argsort(xy[:, 0]).astype(np.int64, copy=False)
     if has_x_ties(xy, order):  # sort by (x, y); stable, so equal points keep index order
         order = np.lexsort((xy[:, 1], xy[:, 0])).astype(np.int64, copy=False)
-    dup = np.full(n, -1, dtype=np.int64)
+    dup = filled(n, -1, np.int64)
     copies = mark_duplicates(xy, order, dup)
     if copies:
         work[C_DUPLICATE] += copies

@@ -27,6 +27,7 @@ import numpy as np
 
 from .. import limits
 from ..core.mesh import V_DEAD
+from ..core.filled import filled
 from ..core.navigate import build_vertex_edges
 from ..core.status import DONE, PAUSE, PRECISION
 from ..errors import TriangleError
@@ -180,7 +181,7 @@ def grow_refiner(ms: MeshState, r: Refiner) -> None:
 
 def _widened(a, rows: int, fill) -> np.ndarray:
     a = np.asarray(a)
-    out = np.full((rows,) + a.shape[1:], fill, dtype=a.dtype)
+    out = filled((rows,) + a.shape[1:], fill, a.dtype)
     out[: a.shape[0]] = a
     return out
 
