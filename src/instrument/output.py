@@ -12,7 +12,6 @@ from .core.mesh import NO_EDGE, NO_SEG
 from .core.gather import kept_vertices, live_slots, number_vertices, subsegment_rows, triangle_corners
 from .core.navigate import edge_ends, list_edges
 from .core.mesh import interpolate_attributes as interpolate
-from .secondorder import midpoints
 
 
 class Result(dict):
@@ -104,6 +103,8 @@ def assemble(ms, inp: dict, o) -> Result:
     triangles = np.empty((tris.size, 3), dtype=np.int32)
     triangle_corners(m, tris, new_id, triangles)
     if o.order == 2 and tris.size:  # the midpoint nodes come after every other vertex
+        from .secondorder import midpoints  # (only o2 needs it: not imported at start-up)
+
         ends, marks = edge_listing()
         extra = midpoints(triangles, ends, verts, first=verts.shape[0], attributes=vattrs, edge_markers=marks)
         triangles = extra.triangles

@@ -26,7 +26,7 @@ import numpy as np
 from ..core.mesh import Mesh, relabel_corners, remove_ghosts
 from ..core.filled import filled
 from ..counters import C_DUPLICATE
-from . import divconq, incremental, parallel
+from . import divconq, parallel
 from .distinct import has_x_ties, mark_duplicates
 
 METHODS = ("divconq", "vertical", "incremental")
@@ -102,7 +102,10 @@ def _restore_numbering(m: Mesh, xy: np.ndarray, ids: np.ndarray) -> None:
 
 
 def _incremental(xy, work, seed, extra_vertices, extra_triangles, tables) -> tuple[Mesh, np.ndarray]:
-    """The randomized incremental method (see incremental.py)."""
+    """The randomized incremental method (see incremental.py; imported here,
+    as only -i runs it)."""
+    from . import incremental
+
     n = xy.shape[0]
     tables = dict(tables, constraints=True)
     order = incremental.insertion_order(xy, np.arange(n), seed)  # first: its temporaries die before the mesh exists
