@@ -55,7 +55,9 @@ def number_vertices(keep: cython.uchar[::1], new_id: cython.int[::1]) -> Index:
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
-def kept_vertices(m: Mesh, keep: cython.uchar[::1], xy: cython.double[:, ::1], marker: cython.int[:, ::1]) -> cython.void:
+def kept_vertices(
+    m: Mesh, keep: cython.uchar[::1], xy: cython.double[:, ::1], marker: cython.int[:, ::1],
+) -> cython.void:
     """The coordinates and boundary markers of the kept vertices, in order
     (``xy`` and ``marker`` have a row for each)."""
     n: Index = 0
@@ -70,7 +72,9 @@ def kept_vertices(m: Mesh, keep: cython.uchar[::1], xy: cython.double[:, ::1], m
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
-def triangle_corners(m: Mesh, slots: cython.longlong[::1], new_id: cython.int[::1], out: cython.int[:, ::1]) -> cython.void:
+def triangle_corners(
+    m: Mesh, slots: cython.longlong[::1], new_id: cython.int[::1], out: cython.int[:, ::1],
+) -> cython.void:
     """``out[i]``: the corners of slot ``slots[i]``, renumbered by ``new_id``."""
     t: Index
     for i in range(slots.shape[0]):

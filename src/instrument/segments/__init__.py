@@ -31,7 +31,8 @@ def clean_segments(segments: np.ndarray, xy: np.ndarray, dup: np.ndarray, warnin
     seg = np.ascontiguousarray(np.asarray(segments, dtype=np.int64).reshape(-1, 2))
     rows = np.empty((seg.shape[0], 3), dtype=np.int64)
     verdict = np.empty(seg.shape[0], dtype=np.int8)
-    kept = check_endpoints(seg, np.ascontiguousarray(dup, dtype=np.int64), np.ascontiguousarray(xy, dtype=np.float64), rows, verdict)
+    dup = np.ascontiguousarray(dup, dtype=np.int64)
+    kept = check_endpoints(seg, dup, np.ascontiguousarray(xy, dtype=np.float64), rows, verdict)
     if kept < seg.shape[0]:
         for i in np.flatnonzero(verdict != KEPT):
             warnings.append(_WARNINGS[int(verdict[i])].format(i))
