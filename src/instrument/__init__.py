@@ -16,10 +16,28 @@ from .pipeline import triangulate
 from .errors import SizeLimitError, TriangleError
 from .output import Result
 from .plot import compare, comparev, plot, work
-from .samples import get_data, load, loads, show_data
 from .refine.order import strategies
 
 from .version import __version__
+
+#: Loaded on first use (PEP 562): the sample-data functions, which the
+#: ``ruppert`` command and most meshing never call, and which cost a few
+#: milliseconds of every start-up.
+_LAZY = {"get_data": "samples", "load": "samples", "loads": "samples", "show_data": "samples"}
+
+
+def __getattr__(name: str):
+    if name in _LAZY:
+        from importlib import import_module
+
+        value = getattr(import_module(f".{_LAZY[name]}", __name__), name)
+        globals()[name] = value
+        return value
+    if name == "samples":
+        from importlib import import_module
+
+        return import_module(".samples", __name__)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 __all__ = [
     "Result",

@@ -9,9 +9,9 @@ from __future__ import annotations
 import numpy as np
 
 from .core.mesh import NO_EDGE, NO_SEG
+from .core.gather import kept_vertices, live_slots, number_vertices, subsegment_rows, triangle_corners
 from .core.navigate import edge_ends, list_edges
 from .core.mesh import interpolate_attributes as interpolate
-from .secondorder import midpoints
 
 
 class Result(dict):
@@ -46,17 +46,16 @@ def _put(out: dict, key: str, arr: np.ndarray) -> None:
 def assemble(ms, inp: dict, o) -> Result:
     """The output dict of the mesh in ``ms`` (a ``MeshState``) under the
     switches ``o``, with the input ``inp`` (for its attributes, holes and
-    regions): Triangle's keys, numbering and order."""
+    regions): Triangle's keys, numbering and order.  The usual outputs
+    (vertices, markers, triangles, segments) are gathered by the kernels of
+    ``core.gather``, one pass each; the rarer ones by numpy."""
 
     m = ms.mesh
-    arrays = m.arrays()
-    corner, twin, seg = arrays["corner"], arrays["twin"], arrays["seg"]
     nv = m.nvert
     # (memory: at 10^6 points the output is as large as the mesh, so the
     # temporaries here are kept to what each output needs)
-    tris = m.live_triangles().astype(np.int32)
-    corners = corner.reshape(-1, 3)[tris]
-    marker = np.asarray(ms.segs.marker)
+    tris = np.empty(m.nslot, dtype=np.int64)
+    tris = tris[: live_slots(m, tris)]
     tri_index = None
 
     def slot_index() -> np.ndarray:
@@ -68,44 +67,49 @@ def assemble(ms, inp: dict, o) -> Result:
         return tri_index
 
     if o.j:
-        keep = np.zeros(nv, dtype=bool)
-        keep[corners.ravel()] = True
+        keep = np.zeros(nv, dtype=np.uint8)
+        keep[np.asarray(m.corner).reshape(-1, 3)[tris].ravel()] = 1
         if ms.collinear:  # no triangle ever existed: only duplicates are unused
             keep[: ms.n_input] = ms.dup < 0
     else:
-        keep = np.ones(nv, dtype=bool)
+        keep = np.ones(nv, dtype=np.uint8)
     if ms.dead is not None and ms.dead.size:
-        keep[ms.dead] = False
-    renumber = o.j or not keep.all()
-    new_id = (np.cumsum(keep) - 1).astype(np.int32) if renumber else None
+        keep[ms.dead] = 0
+    new_id = np.empty(nv, dtype=np.int32)  # the identity when every vertex is kept
+    nkept = number_vertices(keep, new_id)
 
     def ids(a):
-        return np.take(new_id, a) if renumber else a.astype(np.int32, copy=False)
+        return np.take(new_id, a)
 
     def edge_listing() -> tuple[np.ndarray, np.ndarray]:
         """The edges as ``e`` lists them, and their markers."""
         e = listed_edges(m)
+        seg, twin = np.asarray(m.seg), np.asarray(m.twin)
         if o.p or o.c:
-            marks = np.where(seg[e] != NO_SEG, marker[np.maximum(seg[e], 0)], 0)
+            marks = np.where(seg[e] != NO_SEG, np.asarray(ms.segs.marker)[np.maximum(seg[e], 0)], 0)
         else:
             marks = twin[e] == NO_EDGE
         return ids(ends_of(m, e)), marks
 
-    verts = arrays["xy"][:nv][keep] if renumber else arrays["xy"][:nv].copy()
+    verts = np.empty((nkept, 2))
+    vmarks = np.empty((nkept, 1), dtype=np.int32)
+    kept_vertices(m, keep, verts, vmarks)
     vattrs = None
     if "vertex_attributes" in inp:
         attrs = np.zeros((nv, inp["vertex_attributes"].shape[1]))
         attrs[: ms.n_input] = inp["vertex_attributes"]
         interpolate(m, attrs, ms.n_input)
-        vattrs = attrs[keep]
-    vmarks = arrays["vmark"][:nv][keep] if renumber else arrays["vmark"][:nv]
-    triangles = ids(corners)
+        vattrs = attrs[keep.view(bool)]
+    triangles = np.empty((tris.size, 3), dtype=np.int32)
+    triangle_corners(m, tris, new_id, triangles)
     if o.order == 2 and tris.size:  # the midpoint nodes come after every other vertex
+        from .secondorder import midpoints  # (only o2 needs it: not imported at start-up)
+
         ends, marks = edge_listing()
         extra = midpoints(triangles, ends, verts, first=verts.shape[0], attributes=vattrs, edge_markers=marks)
         triangles = extra.triangles
         verts = np.vstack([verts, extra.vertices])
-        vmarks = np.concatenate([vmarks, extra.vertex_markers])
+        vmarks = _col(np.concatenate([vmarks.ravel(), extra.vertex_markers]))
         if vattrs is not None:
             vattrs = np.vstack([vattrs, extra.vertex_attributes])
 
@@ -115,17 +119,20 @@ def assemble(ms, inp: dict, o) -> Result:
         if vattrs is not None:
             _put(out, "vertex_attributes", vattrs)
         if not o.B:
-            _put(out, "vertex_markers", _col(vmarks))
+            _put(out, "vertex_markers", vmarks)
     if not o.E:
         _put(out, "triangles", triangles)
-        if o.A and arrays["attribute"].shape[0]:
-            _put(out, "triangle_attributes", arrays["attribute"][tris].reshape(-1, 1))
+        attribute = np.asarray(m.attribute)
+        if o.A and attribute.shape[0]:
+            _put(out, "triangle_attributes", attribute[tris].reshape(-1, 1))
     if (o.p or o.c) and not o.P:
         constrained = listed_edges(m, constrained=True)
-        # a subsegment made on triangle edge a -> b is listed b -> a (Triangle's order)
-        _put(out, "segments", ids(ends_of(m, constrained)[:, ::-1]))
+        ends = np.empty((constrained.size, 2), dtype=np.int32)
+        marks = np.empty((constrained.size, 1), dtype=np.int32)
+        subsegment_rows(m, constrained, new_id, ms.segs.marker, ends, marks)
+        _put(out, "segments", ends)
         if not o.B:
-            _put(out, "segment_markers", _col(marker[seg[constrained]]))
+            _put(out, "segment_markers", marks)
         if o.p:
             for key in ("holes", "regions"):
                 if key in inp:
@@ -136,7 +143,7 @@ def assemble(ms, inp: dict, o) -> Result:
         if not o.B:
             _put(out, "edge_markers", _col(marks))
     if o.n:
-        tw = twin.reshape(-1, 3)[tris]
+        tw = np.asarray(m.twin).reshape(-1, 3)[tris]
         nb = np.where(tw == NO_EDGE, -1, slot_index()[np.maximum(tw, 0) // 3])
         _put(out, "neighbors", nb.astype(np.int32))
     return out

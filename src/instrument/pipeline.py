@@ -19,13 +19,12 @@ import os
 
 import numpy as np
 
-from . import counters, limits, refine, statistics
+from . import counters, limits, refine
 from .carve import carve
 from .core.subsegments import Subsegments
 from .delaunay import delaunay
 from .errors import TriangleError
 from .output import Result, assemble
-from .reconstruct import make_delaunay, reconstruct
 from .segments import clean_segments, enclose_hull, recover_segments
 from .state import MeshState
 from .refine.order import strategy_id
@@ -98,11 +97,15 @@ def triangulate(
     work = counters.new_work()
     attrs = None
     if o.r:  # the given triangles, as they are
+        from .reconstruct import reconstruct  # (only -r needs it: not imported at start-up)
+
         ms, inp, attrs = reconstruct(tri, inp, o, work, seed)
     else:
-        ms = mesh_input(inp, o, work, seed, threads=threads)
+        ms = mesh_input(inp, o, work, seed, threads=threads, room=refine.starting_room(inp["vertices"].shape[0], o))
     refining = o.quality and ms.mesh.nlive > 0
     if refining and o.r:
+        from .reconstruct import make_delaunay
+
         make_delaunay(ms)  # Bowyer-Watson needs a Delaunay mesh
     rows = None
     if refining:
@@ -124,6 +127,8 @@ def triangulate(
     result.work = counters.as_dict(work)
     result.warnings = ms.warnings
     if o.V and not o.Q:
+        from . import statistics  # (only V needs it: not imported at start-up)
+
         statistics.emit(statistics.library_report(tri, o, result, warnings=result.warnings))
     return result
 

@@ -18,11 +18,14 @@ def carve(ms: MeshState, o: Options, holes: np.ndarray | None, regions: np.ndarr
     m = ms.mesh
     m.add_constraint_tables()
     slots = m.triangle_capacity
-    lo = xy_in.min(axis=0)
-    hi = xy_in.max(axis=0)
+    has_regions = regions is not None and len(regions) > 0
+    has_holes = holes is not None and len(holes) > 0 and not o.O
+    if has_regions or has_holes:  # the input's bounding box, for locating their points
+        lo = xy_in.min(axis=0)
+        hi = xy_in.max(axis=0)
+        start = start_hull_edge(m, o.i)  # hole and region points must lie strictly left of its line
     found_regions = None
-    start = start_hull_edge(m, o.i)  # hole and region points must lie strictly left of its line
-    if regions is not None and len(regions):
+    if has_regions:
         found_regions = np.zeros((len(regions), 2), dtype=np.int64)
         locate_points(m, np.ascontiguousarray(regions[:, :2]), lo, hi, found_regions, start)
     queue = np.zeros(slots, dtype=np.int64)
@@ -30,7 +33,7 @@ def carve(ms: MeshState, o: Options, holes: np.ndarray | None, regions: np.ndarr
     n = 0
     if not o.c:
         n = infect_hull(m, ms.segs, queue)
-    if holes is not None and len(holes) and not o.O:
+    if has_holes:
         found = np.zeros((len(holes), 2), dtype=np.int64)
         locate_points(m, np.ascontiguousarray(holes), lo, hi, found, start)
         for t in found[found[:, 0] >= 0, 0]:

@@ -46,6 +46,7 @@ import numpy as np
 import cython
 
 from ..counters import new_work
+from .filled import filled
 
 if not cython.compiled:  # compiled, these are mesh.pxd's
     Index = cython.Py_ssize_t  # a vertex, triangle slot or edge number
@@ -66,7 +67,7 @@ PARENT_COLUMNS = 5
 def _widened(a, rows: int, fill):
     """``a`` with ``rows`` rows, the new ones set to ``fill``."""
     a = np.asarray(a)
-    out = np.full((rows,) + a.shape[1:], fill, dtype=a.dtype)
+    out = filled((rows,) + a.shape[1:], fill, a.dtype)
     out[: a.shape[0]] = a
     return out
 
@@ -99,16 +100,16 @@ class Mesh:
         slots = max(int(triangles), 4)
         self.xy = _widened(xy, cap, 0.0)
         self.vmark = np.zeros(cap, dtype=np.int32)
-        self.vtri = np.full(cap if constraints else 0, -1, dtype=np.int64)
+        self.vtri = filled(cap if constraints else 0, -1, np.int64)
         self.vtype = np.zeros(cap, dtype=np.int8)
-        self.parent = np.full((cap if parents else 0, PARENT_COLUMNS), -1.0)
-        self.vslot = np.full(cap if constraints else 0, -1, dtype=np.int64)
-        self.corner = np.full(3 * slots, GHOST, dtype=np.int32)
-        self.twin = np.full(3 * slots, NO_EDGE, dtype=np.int32)
-        self.seg = np.full(3 * slots if constraints else 0, NO_SEG, dtype=np.int32)
+        self.parent = filled((cap if parents else 0, PARENT_COLUMNS), -1.0)
+        self.vslot = filled(cap if constraints else 0, -1, np.int64)
+        self.corner = filled(3 * slots, GHOST, np.int32)
+        self.twin = filled(3 * slots, NO_EDGE, np.int32)
+        self.seg = filled(3 * slots if constraints else 0, NO_SEG, np.int32)
         self.stamp = np.zeros(slots, dtype=np.int32)
         self.free = np.zeros(slots, dtype=np.int32)
-        self.area_bound = np.full(slots if area_bounds else 0, -1.0)
+        self.area_bound = filled(slots if area_bounds else 0, -1.0)
         self.attribute = np.zeros(slots if attributes else 0)
         self.tflag = np.zeros(slots, dtype=np.int8)
         self.nvert = n
@@ -203,9 +204,9 @@ class Mesh:
         this first, and ``new_triangle`` writes ``seg`` only when it has rows."""
         if self.has_constraint_tables:
             return
-        self.seg = np.full(3 * self.stamp.shape[0], NO_SEG, dtype=np.int32)
-        self.vtri = np.full(self.xy.shape[0], -1, dtype=np.int64)
-        self.vslot = np.full(self.xy.shape[0], -1, dtype=np.int64)
+        self.seg = filled(3 * self.stamp.shape[0], NO_SEG, np.int32)
+        self.vtri = filled(self.xy.shape[0], -1, np.int64)
+        self.vslot = filled(self.xy.shape[0], -1, np.int64)
 
     def add_area_bounds(self, bounds) -> None:
         """Start the per-triangle area bounds with ``bounds`` (one per slot in use)."""

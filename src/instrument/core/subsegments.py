@@ -14,13 +14,15 @@ from __future__ import annotations
 
 import numpy as np
 
+from .filled import filled
+
 import cython
 from cython.cimports.instrument.core.mesh import Index
 
 
 def _widened(a, rows: int, fill):
     a = np.asarray(a)
-    out = np.full((rows,) + a.shape[1:], fill, dtype=a.dtype)
+    out = filled((rows,) + a.shape[1:], fill, a.dtype)
     out[: a.shape[0]] = a
     return out
 
@@ -32,8 +34,8 @@ class Subsegments:
     def __init__(self, capacity: int):
         capacity = max(int(capacity), 1)
         self.marker = np.zeros(capacity, dtype=np.int32)
-        self.source = np.full(capacity, -1, dtype=np.int32)
-        self.ends = np.full((capacity, 2), -1, dtype=np.int32)
+        self.source = filled(capacity, -1, np.int32)
+        self.ends = filled((capacity, 2), -1, np.int32)
         self.count = 0
 
     @property

@@ -24,8 +24,10 @@ from __future__ import annotations
 import numpy as np
 
 from ..core.mesh import Mesh, relabel_corners, remove_ghosts
+from ..core.filled import filled
 from ..counters import C_DUPLICATE
-from . import divconq, incremental, parallel
+from . import divconq, parallel
+from .distinct import has_x_ties, mark_duplicates
 
 METHODS = ("divconq", "vertical", "incremental")
 
@@ -62,23 +64,16 @@ def delaunay(
     n = xy.shape[0]
     # without ties in x the order is unique, so numpy's unstable sort (three
     # times faster at 10^6 points) gives the stable one
-    order = np.argsort(xy[:, 0])
-    xs = xy[order, 0]
-    if np.any(xs[1:] == xs[:-1]):  # ties in x: sort by (x, y); stable, so equal points keep index order
-        order = np.lexsort((xy[:, 1], xy[:, 0]))
-    dup = np.full(n, -1, dtype=np.int64)
-    if n > 1:
-        s = xy[order]
-        new = np.empty(n, dtype=bool)
-        new[0] = True
-        np.not_equal(s[1:, 0], s[:-1, 0], out=new[1:])  # column by column: any(axis=1) is several times slower
-        new[1:] |= s[1:, 1] != s[:-1, 1]
-        if not new.all():
-            keeper = order[np.maximum.accumulate(np.where(new, np.arange(n), 0))]
-            dup[order[~new]] = keeper[~new]
-            work[C_DUPLICATE] += int(n - new.sum())
-            order = order[new]
-    ids = order.astype(np.int64)
+    xy = np.ascontiguousarray(xy, dtype=np.float64)
+    order = np.argsort(xy[:, 0]).astype(np.int64, copy=False)
+    if has_x_ties(xy, order):  # sort by (x, y); stable, so equal points keep index order
+        order = np.lexsort((xy[:, 1], xy[:, 0])).astype(np.int64, copy=False)
+    dup = filled(n, -1, np.int64)
+    copies = mark_duplicates(xy, order, dup)
+    if copies:
+        work[C_DUPLICATE] += copies
+        order = order[dup[order] < 0]
+    ids = order  # cut_order reorders it in place
     alternate = method == "divconq"
     top = parallel.plan(ids.size, alternate, threads)
     if top.halves is None:
@@ -107,7 +102,10 @@ def _restore_numbering(m: Mesh, xy: np.ndarray, ids: np.ndarray) -> None:
 
 
 def _incremental(xy, work, seed, extra_vertices, extra_triangles, tables) -> tuple[Mesh, np.ndarray]:
-    """The randomized incremental method (see incremental.py)."""
+    """The randomized incremental method (see incremental.py; imported here,
+    as only -i runs it)."""
+    from . import incremental
+
     n = xy.shape[0]
     tables = dict(tables, constraints=True)
     order = incremental.insertion_order(xy, np.arange(n), seed)  # first: its temporaries die before the mesh exists

@@ -37,6 +37,8 @@ import functools
 
 import numpy as np
 
+from ..core.filled import filled
+
 import cython
 from cython.cimports.instrument.core.mesh import GHOST, Index, Mesh, bond, dest, lnext, lprev, new_triangle, org
 from cython.cimports.instrument.core.predicates import incircle, orient2d
@@ -647,4 +649,4 @@ def triangulate_sorted(m: Mesh, n: int, alternate: bool) -> None:
     """Triangulate points ``0 .. n-1`` of ``m`` (distinct, in cut order) with
     ghosts around the hull; ``m`` has room for 2n + 8 triangles."""
     if n >= 2:
-        triangulate_group(m, np.full(n, -1, dtype=np.int32), 0, n, 0, alternate)
+        triangulate_group(m, filled(n, -1, np.int32), 0, n, 0, alternate)

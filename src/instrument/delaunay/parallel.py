@@ -16,13 +16,16 @@ merge's two ghosts).  The work counters are the sums of the threads' own.
 from __future__ import annotations
 
 import math
-from concurrent.futures import Future, ThreadPoolExecutor
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from ..core.mesh import Mesh
 from . import divconq
+
+if TYPE_CHECKING:
+    from concurrent.futures import ThreadPoolExecutor
 
 #: Below this many points per leaf, threads cost more than they save.
 MIN_LEAF = 1 << 14
@@ -66,7 +69,10 @@ def plan(n: int, alternate: bool, threads: int) -> Group:
 def workers(top: Group) -> ThreadPoolExecutor:
     """A pool for ``cut_order`` and ``triangulate`` on the tree: one thread
     for each right half (the caller's thread takes the left halves), so
-    that a thread waiting for its right half never waits for a free thread."""
+    that a thread waiting for its right half never waits for a free thread.
+    (concurrent.futures is imported here, not at the top: most runs are too
+    small for threads, and it costs every start-up several milliseconds.)"""
+    from concurrent.futures import ThreadPoolExecutor
 
     def right_halves(g: Group) -> int:
         return 0 if g.halves is None else 1 + right_halves(g.halves[0]) + right_halves(g.halves[1])

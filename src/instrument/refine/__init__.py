@@ -27,6 +27,7 @@ import numpy as np
 
 from .. import limits
 from ..core.mesh import V_DEAD
+from ..core.filled import filled
 from ..core.navigate import build_vertex_edges
 from ..core.status import DONE, PAUSE, PRECISION
 from ..errors import TriangleError
@@ -180,7 +181,7 @@ def grow_refiner(ms: MeshState, r: Refiner) -> None:
 
 def _widened(a, rows: int, fill) -> np.ndarray:
     a = np.asarray(a)
-    out = np.full((rows,) + a.shape[1:], fill, dtype=a.dtype)
+    out = filled((rows,) + a.shape[1:], fill, a.dtype)
     out[: a.shape[0]] = a
     return out
 
@@ -232,6 +233,21 @@ def _smallest_area_bound(ms: MeshState, o: Options) -> float | None:
         if live.size:
             bounds.append(float(live.min()))
     return min(bounds) if bounds else None
+
+
+def starting_room(n_input: int, o: Options) -> int:
+    """Vertices the first stages should reserve beyond the input's ``n_input``
+    (``pipeline.mesh_input``'s ``room``), so that refinement rarely grows
+    the mesh.  Under ``q`` without a fixed area bound a small input ends
+    with up to about seven times its vertices, counting the ones Chew's rule
+    deletes (la.poly under pq30: 141 to 941 vertex rows): room for that from
+    the start saves the copies of every table that ``_presize`` and each
+    later doubling make, which on such inputs cost a tenth of the run.
+    Anything else starts small and ``_presize`` or growth makes the room.
+    (Results do not depend on the room: tests/unit/test_room.py.)"""
+    if o.quality and not o.max_area > 0 and 2 * n_input < SMALL_MESH:
+        return 7 * n_input + 64
+    return 16
 
 
 def _presize(ms: MeshState, o: Options, area: float, limit: int) -> None:

@@ -18,6 +18,7 @@ import numpy as np
 import cython
 from cython.cimports.instrument.core.mesh import Index
 
+from ..core.filled import filled
 from ..counters import NAMES
 from .order import TRIANGLE
 
@@ -73,7 +74,7 @@ class Refiner:
         self.hseq = np.zeros(queue, dtype=np.int64)
         self.htri = np.zeros(queue, dtype=np.int64)
         self.hstamp = np.zeros(queue, dtype=np.int64)
-        self.bucket = np.full((2, NBUCKETS), -1, dtype=np.int64)
+        self.bucket = filled((2, NBUCKETS), -1, np.int64)
         self.hsize = 0
         self.seq = 0
         self.top_bucket = -1

@@ -15,6 +15,7 @@ from ..core.status import DONE, FAILED, NEED_BUFFER
 from ..counters import C_STEINER
 from ..errors import TriangleError
 from ..state import MeshState
+from .endpoints import BAD_FIRST, BAD_SECOND, COINCIDENT, KEPT, all_different, check_endpoints, pair_keys
 from .recover import Recovery, count_inverted, insert_segments, mark_hull
 
 TOO_CLOSE = (
@@ -27,28 +28,22 @@ def clean_segments(segments: np.ndarray, xy: np.ndarray, dup: np.ndarray, warnin
     """Input segments as rows (a, b, input index), with Triangle's warnings for
     invalid endpoints and coincident endpoints; endpoints that are duplicate
     vertices are mapped to the copy in the mesh."""
-    n = xy.shape[0]
-    seg = np.asarray(segments, dtype=np.int64).reshape(-1, 2)
-    a, b = seg[:, 0], seg[:, 1]  # column by column: numpy's row-wise paths are several times slower
-    bad_first = (a < 0) | (a >= n)
-    bad_second = ~bad_first & ((b < 0) | (b >= n))
-    ok = ~(bad_first | bad_second)
-    if not ok.all():
-        a, b = np.where(ok, a, 0), np.where(ok, b, 0)
-    if (dup >= 0).any():
-        a, b = np.where(dup[a] >= 0, dup[a], a), np.where(dup[b] >= 0, dup[b], b)
-    coincident = ok & (xy[a, 0] == xy[b, 0]) & (xy[a, 1] == xy[b, 1])
-    for i in np.flatnonzero(~ok | coincident):
-        if bad_first[i]:
-            warnings.append(f"Warning:  Invalid first endpoint of segment {i} in input.")
-        elif bad_second[i]:
-            warnings.append(f"Warning:  Invalid second endpoint of segment {i} in input.")
-        else:
-            warnings.append(f"Warning:  Endpoints of segment {i} are coincident in input.")
-    keep = np.flatnonzero(ok & ~coincident)
-    rows = np.empty((keep.size, 3), dtype=np.int64)
-    rows[:, 0], rows[:, 1], rows[:, 2] = a[keep], b[keep], keep
-    return rows
+    seg = np.ascontiguousarray(np.asarray(segments, dtype=np.int64).reshape(-1, 2))
+    rows = np.empty((seg.shape[0], 3), dtype=np.int64)
+    verdict = np.empty(seg.shape[0], dtype=np.int8)
+    dup = np.ascontiguousarray(dup, dtype=np.int64)
+    kept = check_endpoints(seg, dup, np.ascontiguousarray(xy, dtype=np.float64), rows, verdict)
+    if kept < seg.shape[0]:
+        for i in np.flatnonzero(verdict != KEPT):
+            warnings.append(_WARNINGS[int(verdict[i])].format(i))
+    return rows[:kept]
+
+
+_WARNINGS = {
+    BAD_FIRST: "Warning:  Invalid first endpoint of segment {} in input.",
+    BAD_SECOND: "Warning:  Invalid second endpoint of segment {} in input.",
+    COINCIDENT: "Warning:  Endpoints of segment {} are coincident in input.",
+}
 
 
 def recover_segments(ms: MeshState, rows: np.ndarray, seg_markers: np.ndarray) -> None:
@@ -98,6 +93,9 @@ def merge_duplicates(rows: np.ndarray, markers: np.ndarray) -> tuple[np.ndarray,
     crossing point has bent that (rounded crossing points are not exactly on
     the line).
     """
+    keys = np.empty(rows.shape[0], dtype=np.int64)
+    if pair_keys(np.ascontiguousarray(rows), keys) and all_different(np.sort(keys)):
+        return rows, markers  # the usual case, found without numpy's unique
     lo, hi = np.minimum(rows[:, 0], rows[:, 1]), np.maximum(rows[:, 0], rows[:, 1])
     if hi.max() < 2**31:  # one integer per endpoint pair: a 1-D unique, several times faster than axis=0
         _, first, inverse = np.unique(lo * (int(hi.max()) + 1) + hi, return_index=True, return_inverse=True)

@@ -1,16 +1,15 @@
 """The files the long options add to Triangle's: meshio formats, ``--work-json``, ``--trace``.
 
 meshio is imported only when ``--format`` asks for it: it costs a tenth of
-the command's start-up.  What each format holds, and how a mesh is shaped for
-it, is ``ruppert_io.meshio_formats``'s table.
+the command's start-up; json and csv likewise only for the files that use
+them (a few milliseconds of every start-up otherwise).  What each format
+holds, and how a mesh is shaped for it, is ``ruppert_io.meshio_formats``'s table.
 """
 
 from __future__ import annotations
 
 import contextlib
-import csv
 import io
-import json
 from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
@@ -31,6 +30,8 @@ def write_extras(long, formats, outbase: str, mesh, result, o, say, warn) -> Non
         _write_meshio(path, mesh, fmt, o)
         say(f"Writing {path}.")
     if long.work_json:
+        import json
+
         work = dict(getattr(result, "work", {}) or {})
         _write_file(long.work_json, json.dumps(work, indent=2) + "\n")
         say(f"Writing {long.work_json}.")
@@ -92,6 +93,8 @@ def _write_file(path: str, text: str) -> None:
 def _write_trace(path: str, trace) -> None:
     """One CSV row per insertion attempt: the engine's trace (a structured
     array), or just the header when the run inserted nothing."""
+    import csv
+
     header = TRACE_HEADER if trace is None else trace.dtype.names
     rows = [] if trace is None else trace.tolist()
     try:
