@@ -64,11 +64,17 @@ def delaunay(
     # times faster at 10^6 points) gives the stable one
     order = np.argsort(xy[:, 0])
     xs = xy[order, 0]
-    if np.any(xs[1:] == xs[:-1]):  # ties in x: sort by (x, y); stable, so equal points keep index order
-        order = np.lexsort((xy[:, 1], xy[:, 0]))
+    if np.any(xs[1:] == xs[:-1]):
+        # ties in x: sort by (x, y), stably, so equal points keep index order.
+        # numpy orders complex numbers by (real, imaginary) part, and its
+        # stable sort (a timsort, which follows the runs a polygon's vertices
+        # make) is faster than lexsort's two passes: 1 against 4 ms on the
+        # benchmark's polygon with holes, 13 against 23 on random points
+        pairs = np.ascontiguousarray(xy, dtype=np.float64).view(np.complex128).reshape(-1)
+        order = np.argsort(pairs, kind="stable")
     dup = np.full(n, -1, dtype=np.int64)
+    s = np.ascontiguousarray(xy[order], dtype=np.float64)  # the points in order: the cuts start from them
     if n > 1:
-        s = xy[order]
         new = np.empty(n, dtype=bool)
         new[0] = True
         np.not_equal(s[1:, 0], s[:-1, 0], out=new[1:])  # column by column: any(axis=1) is several times slower
@@ -78,17 +84,20 @@ def delaunay(
             dup[order[~new]] = keeper[~new]
             work[C_DUPLICATE] += int(n - new.sum())
             order = order[new]
-    ids = order.astype(np.int64)
+            s = s[new]
+    ids = order.astype(np.int64, copy=False)
     alternate = method == "divconq"
     top = parallel.plan(ids.size, alternate, threads)
     if top.halves is None:
-        pts = divconq.cut_order(xy, ids, alternate)
+        pts = divconq.cut_order(xy, ids, alternate, s)
+        del s
         m = Mesh(pts, 2 * n + 8 + extra_triangles, vertices=n + extra_vertices, work=work, **tables)
         del pts
         divconq.triangulate_sorted(m, ids.size, alternate)
     else:
         with parallel.workers(top) as pool:
-            pts = parallel.cut_order(xy, ids, alternate, top, pool)
+            pts = parallel.cut_order(xy, ids, alternate, top, pool, s)
+            del s
             m = Mesh(pts, 2 * n + 8 + extra_triangles, vertices=n + extra_vertices, work=work, **tables)
             del pts
             parallel.triangulate(m, top, alternate, pool)

@@ -180,14 +180,17 @@ def split_group(pts, ids, lo: int, hi: int, frame: int) -> int:
     return mid
 
 
-def cut_order(xy, ids, alternate: bool):
+def cut_order(xy, ids, alternate: bool, pts=None):
     """Order ``ids`` (int64, distinct points sorted in frame 0) for the
     recursion, in place, and return their coordinates in that order: each
     group of more than three is split at ``size >> 1`` into halves separated
     in the frame of its cut, the frames alternating from 0 at the top
     (``alternate``) or always 0; groups of two or three end in frame 0 order.
-    (The top cut is in frame 0, where the points already are sorted.)"""
-    pts = np.ascontiguousarray(np.asarray(xy)[ids], dtype=np.float64)
+    (The top cut is in frame 0, where the points already are sorted.)
+    ``pts``: the rows ``xy[ids]`` (C-contiguous float64) if the caller has
+    them, which are then reordered in place and returned."""
+    if pts is None:
+        pts = np.ascontiguousarray(np.asarray(xy)[ids], dtype=np.float64)
     n = ids.shape[0]
     if not alternate or n <= 3:
         return pts
