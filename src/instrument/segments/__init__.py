@@ -45,7 +45,12 @@ def clean_segments(segments: np.ndarray, xy: np.ndarray, dup: np.ndarray, warnin
             warnings.append(f"Warning:  Invalid second endpoint of segment {i} in input.")
         else:
             warnings.append(f"Warning:  Endpoints of segment {i} are coincident in input.")
-    keep = np.flatnonzero(ok & ~coincident)
+    good = ok & ~coincident
+    if good.all():  # the usual case: every row, without gathering them
+        rows = np.empty((seg.shape[0], 3), dtype=np.int64)
+        rows[:, 0], rows[:, 1], rows[:, 2] = a, b, np.arange(seg.shape[0])
+        return rows
+    keep = np.flatnonzero(good)
     rows = np.empty((keep.size, 3), dtype=np.int64)
     rows[:, 0], rows[:, 1], rows[:, 2] = a[keep], b[keep], keep
     return rows
@@ -100,7 +105,11 @@ def merge_duplicates(rows: np.ndarray, markers: np.ndarray) -> tuple[np.ndarray,
     """
     lo, hi = np.minimum(rows[:, 0], rows[:, 1]), np.maximum(rows[:, 0], rows[:, 1])
     if hi.max() < 2**31:  # one integer per endpoint pair: a 1-D unique, several times faster than axis=0
-        _, first, inverse = np.unique(lo * (int(hi.max()) + 1) + hi, return_index=True, return_inverse=True)
+        key = lo * (int(hi.max()) + 1) + hi
+        ordered = np.sort(key)  # most inputs repeat no segment: a plain sort tells (a third of unique's time)
+        if not (ordered[1:] == ordered[:-1]).any():
+            return rows, markers
+        _, first, inverse = np.unique(key, return_index=True, return_inverse=True)
     else:
         key = np.stack([lo, hi], axis=1)
         _, first, inverse = np.unique(key, axis=0, return_index=True, return_inverse=True)

@@ -69,8 +69,11 @@ class Recovery:
     def __init__(self, rows, markers, buffer: int, plain: int = 0):
         rows = np.asarray(rows, dtype=np.int64).reshape(-1, 3)
         self.plain = plain
-        ends = np.full((int(rows[:, 2].max()) + 1 if rows.shape[0] else 1, 2), -1, dtype=np.int64)
-        ends[rows[:, 2]] = rows[:, :2]
+        if rows.shape[0] and np.array_equal(rows[:, 2], np.arange(rows.shape[0])):  # every input row: no scatter
+            ends = np.ascontiguousarray(rows[:, :2])
+        else:
+            ends = np.full((int(rows[:, 2].max()) + 1 if rows.shape[0] else 1, 2), -1, dtype=np.int64)
+            ends[rows[:, 2]] = rows[:, :2]
         self.ends = ends
         self.pieces = np.zeros((rows.shape[0] + 64, 3), dtype=np.int64)
         np.asarray(self.pieces)[: rows.shape[0]] = rows[::-1]
