@@ -90,7 +90,10 @@ def recover_segments(ms: MeshState, rows: np.ndarray, seg_markers: np.ndarray) -
         if status == NEED_BUFFER:
             work.grow_buffer()
             continue
-        ms.grow(vertices=m.nvert // 2 + 16, triangles=m.triangle_capacity // 2 + 64, records=ms.segs.capacity)
+        # NEED_ROOM: the mesh, the records or the stack of pieces (which
+        # starts small and grows alone)
+        if m.nvert >= m.vertex_capacity or m.spare() < 8 or ms.segs.count + 2 > ms.segs.capacity:
+            ms.grow(vertices=m.nvert // 2 + 16, triangles=m.triangle_capacity // 2 + 64, records=ms.segs.capacity)
         work.grow_pieces()
 
 

@@ -59,12 +59,15 @@ _PIECE_BUFFER = cython.declare(cython.int, 4)  # the scratch buffer is too small
 
 @cython.cclass
 class Recovery:
-    """The work of ``insert_segments``, kept between its calls: a stack of
-    pieces (a, b, input segment; the top is next), the input segments'
-    markers, a scratch buffer, and a count of pieces handled against a bound
-    (rounded crossing points that re-route each other must not loop for
-    ever).  Vertices from ``plain`` on are crossing vertices (rounded);
-    ``ends`` holds each input segment's two endpoints."""
+    """The work of ``insert_segments``, kept between its calls: the input
+    rows (a, b, input segment) and how many have been taken, a stack of
+    pieces (the top is next; a row is pushed when the stack is empty, so
+    the pieces a split leaves come before the next row, as if every row
+    had been stacked up front, without copying them all), the input
+    segments' markers, a scratch buffer, and a count of pieces handled
+    against a bound (rounded crossing points that re-route each other must
+    not loop for ever).  Vertices from ``plain`` on are crossing vertices
+    (rounded); ``ends`` holds each input segment's two endpoints."""
 
     def __init__(self, rows, markers, buffer: int, plain: int = 0):
         rows = np.asarray(rows, dtype=np.int64).reshape(-1, 3)
@@ -75,9 +78,10 @@ class Recovery:
             ends = np.full((int(rows[:, 2].max()) + 1 if rows.shape[0] else 1, 2), -1, dtype=np.int64)
             ends[rows[:, 2]] = rows[:, :2]
         self.ends = ends
-        self.pieces = np.zeros((rows.shape[0] + 64, 3), dtype=np.int64)
-        np.asarray(self.pieces)[: rows.shape[0]] = rows[::-1]
-        self.top = rows.shape[0]
+        self.rows = np.ascontiguousarray(rows)
+        self.taken = 0
+        self.pieces = np.zeros((64, 3), dtype=np.int64)
+        self.top = 0
         self.markers = np.ascontiguousarray(markers, dtype=np.int32)
         self.buf = np.zeros(buffer, dtype=np.int64)
         self.handled = 0
@@ -94,7 +98,8 @@ class Recovery:
 
     @property
     def current(self) -> tuple[int, int, int]:
-        """The piece on top of the stack: (a, b, input segment)."""
+        """The piece on top of the stack (a, b, input segment): the one
+        ``insert_segments`` stopped at."""
         p = np.asarray(self.pieces)[self.top - 1]
         return int(p[0]), int(p[1]), int(p[2])
 
@@ -713,7 +718,8 @@ def _ends_at(segs: Subsegments, kept: Index, half: Index, o: Index, d: Index, p:
 @cython.nogil
 @cython.exceptval(check=False)
 def insert_segments(m: Mesh, segs: Subsegments, work: Recovery) -> cython.int:
-    """Recover every piece on ``work``'s stack (the top is next).
+    """Recover every piece on ``work``'s stack (the top is next), taking
+    the next input row whenever the stack is empty.
 
     Returns DONE, NEED_ROOM or NEED_BUFFER (grow and call again: nothing was
     half done) or FAILED.  The pieces handled are bounded by the segments
@@ -739,7 +745,16 @@ def insert_segments(m: Mesh, segs: Subsegments, work: Recovery) -> cython.int:
     reroute: cython.bint
     src_c: Index
     marker: cython.int
-    while work.top > 0:
+    rows: cython.longlong[:, ::1] = work.rows
+    while True:
+        if work.top == 0:  # (the stack always has room for one)
+            if work.taken == rows.shape[0]:
+                break
+            pieces[0, 0] = rows[work.taken, 0]
+            pieces[0, 1] = rows[work.taken, 1]
+            pieces[0, 2] = rows[work.taken, 2]
+            work.top = 1
+            work.taken += 1
         if work.handled > 8 * (work.inputs + m.nvert) + 1024:
             return FAILED
         work.handled += 1
