@@ -65,9 +65,12 @@ PARENT_COLUMNS = 5
 
 
 def _widened(a, rows: int, fill):
-    """``a`` with ``rows`` rows, the new ones set to ``fill``."""
+    """``a`` with ``rows`` rows, the new ones set to ``fill``.  Zeros come
+    from the OS's lazily mapped pages: the room a mesh grows by is touched
+    only as it is used (numpy's fill writes every page at once)."""
     a = np.asarray(a)
-    out = filled((rows,) + a.shape[1:], fill, a.dtype)
+    shape = (rows,) + a.shape[1:]
+    out = np.zeros(shape, dtype=a.dtype) if fill == 0 else filled(shape, fill, a.dtype)
     out[: a.shape[0]] = a
     return out
 

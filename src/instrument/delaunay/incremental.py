@@ -77,8 +77,9 @@ def insertion_order(xy, ids, seed: int = 0):
     if ids.size == 0:
         return ids
     pts = xy[ids]
-    lo = pts.min(axis=0)
-    span = float((pts.max(axis=0) - lo).max())
+    # column by column: a reduction along axis 0 of an (n, 2) array is many times slower
+    lo = (float(pts[:, 0].min()), float(pts[:, 1].min()))
+    span = max(float(pts[:, 0].max()) - lo[0], float(pts[:, 1].max()) - lo[1])
     scale = 65535.0 / span if span > 0 else 0.0
     if not np.isfinite(scale):
         scale = 0.0

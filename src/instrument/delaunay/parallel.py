@@ -80,10 +80,13 @@ def workers(top: Group) -> ThreadPoolExecutor:
     return ThreadPoolExecutor(max_workers=max(1, right_halves(top)), thread_name_prefix="divconq")
 
 
-def cut_order(xy: np.ndarray, ids: np.ndarray, alternate: bool, top: Group, pool: ThreadPoolExecutor) -> np.ndarray:
+def cut_order(
+    xy: np.ndarray, ids: np.ndarray, alternate: bool, top: Group, pool: ThreadPoolExecutor, pts: np.ndarray | None = None
+) -> np.ndarray:
     """``divconq.cut_order`` with the tree's groups cut at once (``ids``
-    sorted in frame 0, as there)."""
-    pts = np.ascontiguousarray(xy[ids], dtype=np.float64)
+    sorted in frame 0, and ``pts``, as there)."""
+    if pts is None:
+        pts = np.ascontiguousarray(xy[ids], dtype=np.float64)
     if alternate:
         _cut(pts, ids, top, pool, True)
     return pts

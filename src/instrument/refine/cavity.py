@@ -97,25 +97,22 @@ def collect_cavity(r: Refiner, m: Mesh, px: cython.double, py: cython.double, t0
     two.  The cavity's triangles form a tree rooted at ``t0`` (and ``t1``)
     and each flip crosses one tree edge, so the bound is that fold along
     the path from the root, whatever the order of the flips:
-    ``r.carry[i]`` holds it for ``cav[i]``.
+    ``r.carry[i]`` holds it for ``r.cav[i]``.
     """
-    xy = m.xy
-    cav = r.cav
-    carry = r.carry
     area: cython.double
     attr: cython.double
     n: Index = 1
-    cav[0] = t0
+    r.cav[0] = t0
     area, attr = inherited(m, t0)
-    carry[0] = area
+    r.carry[0] = area
     m.tflag[t0] = 1
     if t1 >= 0:
-        cav[1] = t1
+        r.cav[1] = t1
         area, attr = inherited(m, t1)
-        carry[1] = area
+        r.carry[1] = area
         m.tflag[t1] = 1
         n = 2
-    tested: Index = cav.shape[0]  # triangles tested outside go at the end of cav
+    tested: Index = r.cav.shape[0]  # triangles tested outside go at the end of r.cav
     nb: Index = 0
     i: Index = 0
     skip_twin: Index = m.twin[skip] if skip >= 0 else -2
@@ -129,8 +126,8 @@ def collect_cavity(r: Refiner, m: Mesh, px: cython.double, py: cython.double, t0
     outside: cython.bint
     passed: cython.double
     while i < n:
-        t = cav[i]
-        passed = carry[i]
+        t = r.cav[i]
+        passed = r.carry[i]
         i += 1
         for k in range(3):
             e = 3 * t + k
@@ -145,16 +142,16 @@ def collect_cavity(r: Refiner, m: Mesh, px: cython.double, py: cython.double, t0
                 if m.tflag[u] == 0:
                     a, b, c = m.corner[3 * u], m.corner[3 * u + 1], m.corner[3 * u + 2]
                     m.work[C_INCIRCLE] += 1
-                    if incircle(xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[c, 0], xy[c, 1], px, py) > 0.0:
+                    if incircle(m.xy[a, 0], m.xy[a, 1], m.xy[b, 0], m.xy[b, 1], m.xy[c, 0], m.xy[c, 1], px, py) > 0.0:
                         m.tflag[u] = 1
-                        cav[n] = u
+                        r.cav[n] = u
                         area, attr = inherited(m, u)
-                        carry[n] = _flip_bound(passed, area)  # the flip across e
+                        r.carry[n] = _flip_bound(passed, area)  # the flip across e
                         n += 1
                         continue
                     m.tflag[u] = 2
                     tested -= 1
-                    cav[tested] = u
+                    r.cav[tested] = u
                 outside = True
             r.bnd[nb, 0] = tw
             r.bnd[nb, 1] = m.corner[lnext(e)]
@@ -165,8 +162,8 @@ def collect_cavity(r: Refiner, m: Mesh, px: cython.double, py: cython.double, t0
             r.bval[nb, 0] = passed
             r.bval[nb, 1] = attr
             nb += 1
-    for j in range(tested, cav.shape[0]):
-        m.tflag[cav[j]] = 0
+    for j in range(tested, r.cav.shape[0]):
+        m.tflag[r.cav[j]] = 0
     return n, nb
 
 
@@ -187,28 +184,25 @@ def order_rim(r: Refiner, m: Mesh, nb: Index, first: Index) -> cython.void:
     the edge leaving vertex ``first``: the order in which Triangle's flips
     meet the new vertex's triangles, so bad triangles and encroached
     subsegments are queued in its order."""
-    bnd = r.bnd
-    bval = r.bval
-    slot = m.vslot
     j: Index
     want: Index
     for j in range(nb):
-        slot[bnd[j, 1]] = j
+        m.vslot[r.bnd[j, 1]] = j
     want = first
     for pos in range(nb):
-        j = slot[want]
+        j = m.vslot[want]
         if j < 0:
             break
         if j != pos:
-            for c in range(bnd.shape[1]):
-                bnd[j, c], bnd[pos, c] = bnd[pos, c], bnd[j, c]
-            for c in range(bval.shape[1]):
-                bval[j, c], bval[pos, c] = bval[pos, c], bval[j, c]
-            slot[bnd[j, 1]] = j
-            slot[bnd[pos, 1]] = pos
-        want = bnd[pos, 2]
+            for c in range(r.bnd.shape[1]):
+                r.bnd[j, c], r.bnd[pos, c] = r.bnd[pos, c], r.bnd[j, c]
+            for c in range(r.bval.shape[1]):
+                r.bval[j, c], r.bval[pos, c] = r.bval[pos, c], r.bval[j, c]
+            m.vslot[r.bnd[j, 1]] = j
+            m.vslot[r.bnd[pos, 1]] = pos
+        want = r.bnd[pos, 2]
     for j in range(nb):
-        slot[bnd[j, 1]] = -1
+        m.vslot[r.bnd[j, 1]] = -1
 
 
 @cython.ccall

@@ -87,13 +87,12 @@ def _shape(m: Mesh, a: Index, b: Index, c: Index) -> tuple[cython.double, cython
     scaled by an exact power of two first (``unit_scale``), the degree-0
     cos^2 is used as it is and the rest is scaled back; in range nothing
     changes."""
-    xy = m.xy
-    bcx: cython.double = xy[b, 0] - xy[c, 0]
-    bcy: cython.double = xy[b, 1] - xy[c, 1]
-    cax: cython.double = xy[c, 0] - xy[a, 0]
-    cay: cython.double = xy[c, 1] - xy[a, 1]
-    abx: cython.double = xy[a, 0] - xy[b, 0]
-    aby: cython.double = xy[a, 1] - xy[b, 1]
+    bcx: cython.double = m.xy[b, 0] - m.xy[c, 0]
+    bcy: cython.double = m.xy[b, 1] - m.xy[c, 1]
+    cax: cython.double = m.xy[c, 0] - m.xy[a, 0]
+    cay: cython.double = m.xy[c, 1] - m.xy[a, 1]
+    abx: cython.double = m.xy[a, 0] - m.xy[b, 0]
+    aby: cython.double = m.xy[a, 1] - m.xy[b, 1]
     big: cython.double = max(max(max(fabs(bcx), fabs(bcy)), max(fabs(cax), fabs(cay))), max(fabs(abx), fabs(aby)))
     if not (big <= 2.0**160 and big >= 2.0**-160):
         return _shape_scaled(bcx, bcy, cax, cay, abx, aby, a, b, c, unit_scale(big))
@@ -112,11 +111,11 @@ def _shape(m: Mesh, a: Index, b: Index, c: Index) -> tuple[cython.double, cython
         q, u, v, mn, l1, l2 = a, b, c, la, lb, lc
     else:
         q, u, v, mn, l1, l2 = b, c, a, lb, lc, la
-    dot: cython.double = (xy[u, 0] - xy[q, 0]) * (xy[v, 0] - xy[q, 0]) + (xy[u, 1] - xy[q, 1]) * (xy[v, 1] - xy[q, 1])
+    dot: cython.double = (m.xy[u, 0] - m.xy[q, 0]) * (m.xy[v, 0] - m.xy[q, 0]) + (m.xy[u, 1] - m.xy[q, 1]) * (m.xy[v, 1] - m.xy[q, 1])
     cos2: cython.double = dot * dot / (l1 * l2)
     if dot < 0.0:  # an obtuse smallest angle cannot happen; keep the sign meaningful
         cos2 = -cos2
-    area2: cython.double = (xy[b, 0] - xy[a, 0]) * (xy[c, 1] - xy[a, 1]) - (xy[b, 1] - xy[a, 1]) * (xy[c, 0] - xy[a, 0])
+    area2: cython.double = (m.xy[b, 0] - m.xy[a, 0]) * (m.xy[c, 1] - m.xy[a, 1]) - (m.xy[b, 1] - m.xy[a, 1]) * (m.xy[c, 0] - m.xy[a, 0])
     circ2: cython.double = la * lb * lc / (area2 * area2) / 4.0 if area2 != 0.0 else _INF
     return mn, cos2, area2, circ2, u, v
 
@@ -197,18 +196,17 @@ def steiner_point(r: Refiner, m: Mesh, h: Index) -> tuple[cython.double, cython.
     is split from handle ``3 t`` (apex at corner 0, where an insertion puts
     the new vertex, as in the handle Triangle queues), which gives Triangle's
     rounding, so the same Steiner points."""
-    xy = m.xy
     o: Index = m.corner[lnext(h)]
     d: Index = m.corner[lprev(h)]
     a: Index = m.corner[h]
-    ox: cython.double = xy[o, 0]
-    oy: cython.double = xy[o, 1]
-    xdo: cython.double = xy[d, 0] - ox
-    ydo: cython.double = xy[d, 1] - oy
-    xao: cython.double = xy[a, 0] - ox
-    yao: cython.double = xy[a, 1] - oy
-    xda: cython.double = xy[d, 0] - xy[a, 0]
-    yda: cython.double = xy[d, 1] - xy[a, 1]
+    ox: cython.double = m.xy[o, 0]
+    oy: cython.double = m.xy[o, 1]
+    xdo: cython.double = m.xy[d, 0] - ox
+    ydo: cython.double = m.xy[d, 1] - oy
+    xao: cython.double = m.xy[a, 0] - ox
+    yao: cython.double = m.xy[a, 1] - oy
+    xda: cython.double = m.xy[d, 0] - m.xy[a, 0]
+    yda: cython.double = m.xy[d, 1] - m.xy[a, 1]
     # The circumcenter is of degree 3 over 2: with edges beyond 2^160 or
     # below 2^-160 its products overflow or leave the normal range.  There
     # the edge vectors are scaled by an exact power of two f (identical
@@ -235,7 +233,7 @@ def steiner_point(r: Refiner, m: Mesh, h: Index) -> tuple[cython.double, cython.
     dadist: cython.double = xda * xda + yda * yda
     denom: cython.double
     if f == 1.0:
-        denom = 0.5 / orient2d(xy[d, 0], xy[d, 1], xy[a, 0], xy[a, 1], ox, oy)
+        denom = 0.5 / orient2d(m.xy[d, 0], m.xy[d, 1], m.xy[a, 0], m.xy[a, 1], ox, oy)
     else:
         denom = 0.5 / orient2d(xdo, ydo, xao, yao, 0.0, 0.0)
     dx: cython.double = (yao * dodist - ydo * aodist) * denom
@@ -288,7 +286,7 @@ def steiner_point(r: Refiner, m: Mesh, h: Index) -> tuple[cython.double, cython.
         else:
             # from d itself: with o far from d (1e226 against 1e64), o +
             # ((d - o) + offset) loses the offset, or d (1e299 against 1e-302)
-            return xy[d, 0] + (0.5 * -xda0 - c * -yda0), xy[d, 1] + (0.5 * -yda0 + c * -xda0), xi, eta, off
+            return m.xy[d, 0] + (0.5 * -xda0 - c * -yda0), m.xy[d, 1] + (0.5 * -yda0 + c * -xda0), xi, eta, off
     elif f != 1.0:
         dx = dx / f
         dy = dy / f

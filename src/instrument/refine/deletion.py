@@ -37,7 +37,6 @@ def _fill_polygon(
     Delaunay choice), then both sides recurse.  ``outer[i]`` is the outside
     twin of the polygon edge ``chain[i] chain[i+1]``.  New triangles go on
     ``r.fan``; returns (base edge of the first, how many)."""
-    xy = m.xy
     root: Index = -1
     made: Index = 0
     stack[0] = 0
@@ -69,7 +68,7 @@ def _fill_polygon(
             m.work[C_INCIRCLE] += 1
             ck = chain[k]
             cq = chain[q]
-            if incircle(xy[ci, 0], xy[ci, 1], xy[cj, 0], xy[cj, 1], xy[ck, 0], xy[ck, 1], xy[cq, 0], xy[cq, 1]) > 0.0:
+            if incircle(m.xy[ci, 0], m.xy[ci, 1], m.xy[cj, 0], m.xy[cj, 1], m.xy[ck, 0], m.xy[ck, 1], m.xy[cq, 0], m.xy[cq, 1]) > 0.0:
                 k = q
         t = new_triangle(m, chain[k], ci, cj)
         m.work[C_CREATED] += 1

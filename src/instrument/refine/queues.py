@@ -110,8 +110,8 @@ def queue_push(r: Refiner, key: cython.double, t: Index, stamp: cython.longlong)
         r.hsize += 1
         r.seq += 1
         r.hkey[i] = key
-        r.htri[i] = t
-        r.hstamp[i] = stamp
+        r.htri[i] = cython.cast(cython.int, t)
+        r.hstamp[i] = cython.cast(cython.int, stamp)
         _bucket_append(r, i)
         return
     i = r.hsize
@@ -119,8 +119,8 @@ def queue_push(r: Refiner, key: cython.double, t: Index, stamp: cython.longlong)
     r.hkey[i] = key
     r.hseq[i] = r.seq
     r.seq += 1
-    r.htri[i] = t
-    r.hstamp[i] = stamp
+    r.htri[i] = cython.cast(cython.int, t)
+    r.hstamp[i] = cython.cast(cython.int, stamp)
     while i > 0:
         up = (i - 1) // 2
         if not _heap_less(r, i, up):

@@ -39,8 +39,8 @@ cdef class Refiner:
     # the bad-triangle queue: a heap, or Triangle's buckets (queues.py)
     cdef public double[::1] hkey     # key (smaller first)
     cdef public long long[::1] hseq  # insertion number (ties); in the bucket log: the next entry
-    cdef public long long[::1] htri  # triangle slot
-    cdef public long long[::1] hstamp  # and its stamp when queued
+    cdef public int[::1] htri        # triangle slot (int32, as the mesh's links: a smaller queue)
+    cdef public int[::1] hstamp      # and its stamp when queued (int32, as Mesh.stamp)
     cdef public long long[:, ::1] bucket  # (2, 4096) each bucket's first and last log entry, -1 empty
     cdef public Index hsize          # entries queued
     cdef public long long seq        # insertions so far

@@ -72,8 +72,8 @@ class Refiner:
         self.work_begun = np.zeros(len(NAMES), dtype=np.int64)
         self.hkey = np.zeros(queue)
         self.hseq = np.zeros(queue, dtype=np.int64)
-        self.htri = np.zeros(queue, dtype=np.int64)
-        self.hstamp = np.zeros(queue, dtype=np.int64)
+        self.htri = np.zeros(queue, dtype=np.int32)  # slots and stamps are int32 in the mesh too
+        self.hstamp = np.zeros(queue, dtype=np.int32)
         self.bucket = filled((2, NBUCKETS), -1, np.int64)
         self.hsize = 0
         self.seq = 0

@@ -80,7 +80,10 @@ def recover_segments(ms: MeshState, rows: np.ndarray, seg_markers: np.ndarray) -
         if status == NEED_BUFFER:
             work.grow_buffer()
             continue
-        ms.grow(vertices=m.nvert // 2 + 16, triangles=m.triangle_capacity // 2 + 64, records=ms.segs.capacity)
+        # NEED_ROOM: the mesh, the records or the stack of pieces (which
+        # starts small and grows alone)
+        if m.nvert >= m.vertex_capacity or m.spare() < 8 or ms.segs.count + 2 > ms.segs.capacity:
+            ms.grow(vertices=m.nvert // 2 + 16, triangles=m.triangle_capacity // 2 + 64, records=ms.segs.capacity)
         work.grow_pieces()
 
 
@@ -98,7 +101,8 @@ def merge_duplicates(rows: np.ndarray, markers: np.ndarray) -> tuple[np.ndarray,
         return rows, markers  # the usual case, found without numpy's unique
     lo, hi = np.minimum(rows[:, 0], rows[:, 1]), np.maximum(rows[:, 0], rows[:, 1])
     if hi.max() < 2**31:  # one integer per endpoint pair: a 1-D unique, several times faster than axis=0
-        _, first, inverse = np.unique(lo * (int(hi.max()) + 1) + hi, return_index=True, return_inverse=True)
+        key = lo * (int(hi.max()) + 1) + hi
+        _, first, inverse = np.unique(key, return_index=True, return_inverse=True)
     else:
         key = np.stack([lo, hi], axis=1)
         _, first, inverse = np.unique(key, axis=0, return_index=True, return_inverse=True)

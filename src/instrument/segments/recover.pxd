@@ -3,6 +3,8 @@ from instrument.core.mesh cimport Index, Mesh
 from instrument.core.subsegments cimport Subsegments
 
 cdef class Recovery:
+    cdef public long long[:, ::1] rows     # the input rows (a, b, input segment), in order
+    cdef public Index taken                # rows moved to the stack so far
     cdef public long long[:, ::1] pieces   # stack of (a, b, input segment); the top is next
     cdef public Index top                  # pieces on the stack
     cdef public int[::1] markers           # the input segments' markers

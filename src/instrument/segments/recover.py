@@ -59,22 +59,29 @@ _PIECE_BUFFER = cython.declare(cython.int, 4)  # the scratch buffer is too small
 
 @cython.cclass
 class Recovery:
-    """The work of ``insert_segments``, kept between its calls: a stack of
-    pieces (a, b, input segment; the top is next), the input segments'
-    markers, a scratch buffer, and a count of pieces handled against a bound
-    (rounded crossing points that re-route each other must not loop for
-    ever).  Vertices from ``plain`` on are crossing vertices (rounded);
-    ``ends`` holds each input segment's two endpoints."""
+    """The work of ``insert_segments``, kept between its calls: the input
+    rows (a, b, input segment) and how many have been taken, a stack of
+    pieces (the top is next; a row is pushed when the stack is empty, so
+    the pieces a split leaves come before the next row, as if every row
+    had been stacked up front, without copying them all), the input
+    segments' markers, a scratch buffer, and a count of pieces handled
+    against a bound (rounded crossing points that re-route each other must
+    not loop for ever).  Vertices from ``plain`` on are crossing vertices
+    (rounded); ``ends`` holds each input segment's two endpoints."""
 
     def __init__(self, rows, markers, buffer: int, plain: int = 0):
         rows = np.asarray(rows, dtype=np.int64).reshape(-1, 3)
         self.plain = plain
-        ends = np.full((int(rows[:, 2].max()) + 1 if rows.shape[0] else 1, 2), -1, dtype=np.int64)
-        ends[rows[:, 2]] = rows[:, :2]
+        if rows.shape[0] and np.array_equal(rows[:, 2], np.arange(rows.shape[0])):  # every input row: no scatter
+            ends = np.ascontiguousarray(rows[:, :2])
+        else:
+            ends = np.full((int(rows[:, 2].max()) + 1 if rows.shape[0] else 1, 2), -1, dtype=np.int64)
+            ends[rows[:, 2]] = rows[:, :2]
         self.ends = ends
-        self.pieces = np.zeros((rows.shape[0] + 64, 3), dtype=np.int64)
-        np.asarray(self.pieces)[: rows.shape[0]] = rows[::-1]
-        self.top = rows.shape[0]
+        self.rows = np.ascontiguousarray(rows)
+        self.taken = 0
+        self.pieces = np.zeros((64, 3), dtype=np.int64)
+        self.top = 0
         self.markers = np.ascontiguousarray(markers, dtype=np.int32)
         self.buf = np.zeros(buffer, dtype=np.int64)
         self.handled = 0
@@ -91,7 +98,8 @@ class Recovery:
 
     @property
     def current(self) -> tuple[int, int, int]:
-        """The piece on top of the stack: (a, b, input segment)."""
+        """The piece on top of the stack (a, b, input segment): the one
+        ``insert_segments`` stopped at."""
         p = np.asarray(self.pieces)[self.top - 1]
         return int(p[0]), int(p[1]), int(p[2])
 
@@ -219,6 +227,55 @@ def _ahead(xy: cython.double[:, ::1], a: Index, b: Index, v: Index) -> cython.bi
     return (ay < vy < by) or (by < vy < ay)
 
 
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _turn_to_edge(m: Mesh, b: Index, e0: Index, plain: Index) -> tuple[Index, cython.int, Index]:
+    """``turn_to``'s answer where the piece is an edge already, found by
+    vertex numbers alone: ``(e, where, visits)`` for the first triangle of
+    ``turn_to``'s turn (counter-clockwise, then clockwise from ``e0``) with
+    ``b`` as a corner, or ``(-1, -1, 0)`` if there is none, or if a
+    crossing vertex (``plain`` or above) comes first.
+
+    Among input vertices (exact orientations) ``turn_to`` stops at that
+    triangle and no earlier: no vertex lies strictly inside the edge
+    ``a b`` and no triangle's wedge at ``a`` holds the edge's direction
+    strictly inside it, as the mesh is a triangulation.  A crossing vertex
+    could pass ``_side``'s tolerance, so the turn gives up there.  Most
+    segments of large inputs are edges of the Delaunay triangulation, and
+    this spares their orientation tests (``visits`` lets the caller count
+    them as made)."""
+    e: Index
+    d: Index
+    x: Index
+    nxt: Index
+    tw: Index
+    visits: Index = 0
+    for direction in range(2):
+        e = e0
+        for _ in range(m.stamp.shape[0]):
+            visits += 1
+            d = m.corner[lprev(e)]
+            x = m.corner[e]
+            if d == b:
+                return e, 1, visits
+            if d >= plain:
+                return -1, -1, 0
+            if x == b:
+                return e, 2, visits
+            if x >= plain:
+                return -1, -1, 0
+            if direction == 0:
+                nxt = m.twin[lprev(e)]
+            else:
+                tw = m.twin[e]
+                nxt = NO_EDGE if tw == NO_EDGE else lnext(tw)
+            if nxt == NO_EDGE or nxt == e0:
+                break
+            e = nxt
+    return -1, -1, 0
+
+
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
@@ -239,6 +296,13 @@ def turn_to(m: Mesh, a: Index, b: Index, e0: Index, plain: Index, sa: Index, sb:
     tw: Index
     od: cython.double
     ox: cython.double
+    where: cython.int
+    visits: Index
+    if a < plain and b < plain:
+        e, where, visits = _turn_to_edge(m, b, e0, plain)
+        if e >= 0:
+            m.work[C_ORIENT] += 2 * visits  # the two tests per triangle the turn below makes
+            return e, where
     for direction in range(2):  # counter-clockwise, then clockwise from e0
         e = e0
         for _ in range(m.stamp.shape[0]):
@@ -654,7 +718,8 @@ def _ends_at(segs: Subsegments, kept: Index, half: Index, o: Index, d: Index, p:
 @cython.nogil
 @cython.exceptval(check=False)
 def insert_segments(m: Mesh, segs: Subsegments, work: Recovery) -> cython.int:
-    """Recover every piece on ``work``'s stack (the top is next).
+    """Recover every piece on ``work``'s stack (the top is next), taking
+    the next input row whenever the stack is empty.
 
     Returns DONE, NEED_ROOM or NEED_BUFFER (grow and call again: nothing was
     half done) or FAILED.  The pieces handled are bounded by the segments
@@ -680,7 +745,16 @@ def insert_segments(m: Mesh, segs: Subsegments, work: Recovery) -> cython.int:
     reroute: cython.bint
     src_c: Index
     marker: cython.int
-    while work.top > 0:
+    rows: cython.longlong[:, ::1] = work.rows
+    while True:
+        if work.top == 0:  # (the stack always has room for one)
+            if work.taken == rows.shape[0]:
+                break
+            pieces[0, 0] = rows[work.taken, 0]
+            pieces[0, 1] = rows[work.taken, 1]
+            pieces[0, 2] = rows[work.taken, 2]
+            work.top = 1
+            work.taken += 1
         if work.handled > 8 * (work.inputs + m.nvert) + 1024:
             return FAILED
         work.handled += 1
