@@ -615,11 +615,10 @@ def _wabove(am: cython.double, ae: cython.int, bm: cython.double, be: cython.int
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
-def _orient2d_wide(
+def _orient2d_wide_at(
     ax: cython.double, ay: cython.double, bx: cython.double, by: cython.double, cx: cython.double, cy: cython.double,
 ) -> tuple[cython.bint, cython.double]:
-    """Stage A of orient2d in unbounded-exponent arithmetic, for coordinates
-    too far apart to be scaled into the exact stages' range.  (True, the
+    """Stage A of orient2d in unbounded-exponent arithmetic, translated to c.  (True, the
     determinant saturated to the double range) if its sign is certain;
     (False, 0) when the rounded differences overflow or the sign is
     not certain."""
@@ -657,6 +656,26 @@ def _orient2d_wide(
 
 
 @cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _orient2d_wide(
+    ax: cython.double, ay: cython.double, bx: cython.double, by: cython.double, cx: cython.double, cy: cython.double,
+) -> tuple[cython.bint, cython.double]:
+    """``_orient2d_wide_at`` translated to each point in turn (the
+    determinant is invariant under cyclic shifts): the differences from a
+    point of a tiny cluster to the others in it are exact, where those from
+    a point far away lose the cluster's coordinates to rounding."""
+    ok: cython.bint
+    v: cython.double
+    ok, v = _orient2d_wide_at(ax, ay, bx, by, cx, cy)
+    if not ok:
+        ok, v = _orient2d_wide_at(bx, by, cx, cy, ax, ay)
+    if not ok:
+        ok, v = _orient2d_wide_at(cx, cy, ax, ay, bx, by)
+    return ok, v
+
+
+@cython.cfunc
 @cython.inline
 @cython.nogil
 @cython.exceptval(check=False)
@@ -674,13 +693,13 @@ def _wprod(x: cython.double, y: cython.double) -> tuple[cython.double, cython.in
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
-def _incircle_wide(
+def _incircle_wide_at(
     ax: cython.double, ay: cython.double, bx: cython.double, by: cython.double,
     cx: cython.double, cy: cython.double, dx: cython.double, dy: cython.double,
 ) -> tuple[cython.bint, cython.double]:
     """Stage A of incircle in unbounded-exponent arithmetic (the operations
     of ``_incircle_exact``'s stage A, in the same order), for coordinates too
-    far apart to be scaled into the exact stages' range.  (True, the
+    far apart to be scaled into the exact stages' range, translated to d.  (True, the
     determinant saturated to the double range) if its sign is certain;
     (False, 0) when a rounded difference overflows or the sign is not
     certain."""
@@ -758,6 +777,33 @@ def _incircle_wide(
     if not _wabove(dm, de, pm, pe):
         return False, 0.0
     return True, _unscale(dm, de)
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _incircle_wide(
+    ax: cython.double, ay: cython.double, bx: cython.double, by: cython.double,
+    cx: cython.double, cy: cython.double, dx: cython.double, dy: cython.double,
+) -> tuple[cython.bint, cython.double]:
+    """``_incircle_wide_at`` translated to each point in turn (a cyclic
+    shift of the four rows changes the determinant's sign): three points
+    1e-152 apart and a fourth 1e139 away are undecided from the far one,
+    whose differences lose the cluster's coordinates, and decided from any
+    of the three."""
+    ok: cython.bint
+    v: cython.double
+    ok, v = _incircle_wide_at(ax, ay, bx, by, cx, cy, dx, dy)
+    if ok:
+        return ok, v
+    ok, v = _incircle_wide_at(bx, by, cx, cy, dx, dy, ax, ay)
+    if ok:
+        return ok, -v
+    ok, v = _incircle_wide_at(cx, cy, dx, dy, ax, ay, bx, by)
+    if ok:
+        return ok, v
+    ok, v = _incircle_wide_at(dx, dy, ax, ay, bx, by, cx, cy)
+    return ok, -v
 
 
 # ---------------------------------------------------------------------------
