@@ -31,23 +31,6 @@ class Defect:
     matches: Callable[[Case, Failure, dict], bool]
 
 
-def _coords(case: Case) -> np.ndarray:
-    v = np.abs(np.asarray(case.input["vertices"], dtype=np.float64)).ravel()
-    return v[v > 0]
-
-
-def tiny_extent(case: Case) -> bool:
-    """Every coordinate below 2^-400 in magnitude."""
-    v = np.abs(np.asarray(case.input["vertices"], dtype=np.float64))
-    return bool(v.size and v.max() < 2.0**-400)
-
-
-def huge(case: Case) -> bool:
-    """Some coordinate above 2^200."""
-    v = _coords(case)
-    return bool(v.size and v.max() > 2.0**200)
-
-
 def has_duplicates(case: Case) -> bool:
     v = np.asarray(case.input["vertices"], dtype=np.float64)
     return len(np.unique(v, axis=0)) < len(v)
@@ -119,28 +102,6 @@ DEFECTS += [
         "same triangles in the same order (-r), ours and Triangle make the same mesh (26 and 26; 34 and 34 from "
         "ours' order)",
         lambda c, f, n: f.kind == "size" and read_switches(c.switches).i and read_switches(c.switches).u,
-    ),
-]
-
-DEFECTS += [
-    Defect(
-        "huge-refinement-precision",
-        "refinement above 2^512 overflows: (1.19e175, 0), (0, 0), (0, 3.96e174) under pqc raise PrecisionError "
-        "(the shell split's length sqrt(dx^2 + dy^2) is inf, the split point NaN; with hypot there the "
-        "refinement runs away to the vertex limit, so other products overflow too); Triangle's quality test "
-        "overflows and keeps the one triangle",
-        lambda c, f, n: huge(c) and read_switches(c.switches).q
-        and f.kind == "ours-error-where-triangle-meshes" and "PrecisionError" in f.message,
-    ),
-]
-
-DEFECTS += [
-    Defect(
-        "recover-tiny-extent",
-        "segment recovery fails ('could not recover segment') on inputs whose whole extent is near 2^-410 to "
-        "2^-515 (three overlapping polygons at ~6e-155 under p: Triangle meshes them; ours meshes the same input "
-        "scaled by 2^300 or more)",
-        lambda c, f, n: f.kind == "ours-error-where-triangle-meshes" and tiny_extent(c),
     ),
 ]
 

@@ -82,9 +82,17 @@ are unchanged) chosen to bring the smallest nonzero and the largest coordinate
 inside it; the result is scaled back, saturating to +-DBL_MAX or to the smallest
 subnormal of the right sign so that a nonzero sign is never lost. Scaling is
 impossible only if the coordinates of a single call span more than about 2^984
-(orient2d) or 2^465 (incircle) in magnitude, e.g. 1e200 next to 1e-200. Then
-the determinant is evaluated exactly with Python's ``fractions.Fraction``
-(every double is a dyadic rational), holding the GIL for that one call.
+(orient2d) or 2^465 (incircle) in magnitude, e.g. 1e200 next to 1e-200 (a mesh
+graded from 1e-300 to 1e300 makes many such calls). Then stage A is evaluated
+again with an unbounded exponent: each value a double mantissa and a C int
+exponent, so that no product under- or overflows and each operation rounds
+once, relative to its result, as Shewchuk's bound assumes (a sum's smaller
+operand may lose bits below 2^-1074 of the larger one, which the 2^-40 margin
+swamps). That decides all but nearly degenerate calls in well under a
+microsecond; the rest are evaluated exactly with Python integers (every double
+is an integer over a power of two; scaled to one denominator no gcd is
+needed, unlike ``fractions.Fraction``, about ten times slower), holding the
+GIL for that one call.
 
 Infinite or NaN inputs are not supported (callers reject them); they return the
 plain floating-point determinant, without looping.
@@ -97,7 +105,6 @@ which would break the error-free transformations.
 from __future__ import annotations
 
 import math
-from fractions import Fraction
 
 import cython
 from cython.cimports.libc.math import fabs, frexp, ldexp
@@ -133,6 +140,9 @@ O_LO = 2.0**-960
 I_LO = 2.0**-660
 I_SMAX = 2.0**300
 ICC_A_SAFE = ICCERRBOUNDA * (1.0 + 2.0**-40)
+# Stage A's bounds with the same margin, for the wide-range filter.
+_CCW_WIDE = cython.declare(cython.double, CCWERRBOUNDA * (1.0 + 2.0**-40))
+_ICC_WIDE = cython.declare(cython.double, ICC_A_SAFE)
 # Safe exponent windows [2^low, 2^high) for nonzero coordinates.
 _O_LOW = cython.declare(cython.int, -485)
 _O_HIGH = cython.declare(cython.int, 500)
@@ -495,31 +505,39 @@ def _unscale(v: cython.double, p: cython.int) -> cython.double:
     return r
 
 
-def _fraction_to_float(x: Fraction) -> float:
-    """Nearest double to x, saturating like `_unscale` (sign always kept)."""
-    if x == 0:
+def _integers(values) -> tuple[list[int], int]:
+    """Integers X_i and k >= 0 with values[i] == X_i / 2^k exactly (every
+    double is a dyadic rational): Python integers keep the whole exponent
+    range, and need no gcd as fractions do."""
+    ratios = [v.as_integer_ratio() for v in values]
+    k = max(d for _, d in ratios).bit_length() - 1
+    return [n << (k - d.bit_length() + 1) for n, d in ratios], k
+
+
+def _ratio_to_float(num: int, den_exp: int) -> float:
+    """Nearest double to num / 2^den_exp, saturating like `_unscale` (sign
+    always kept)."""
+    if num == 0:
         return 0.0
-    sign = 1.0 if x > 0 else -1.0
+    sign = 1.0 if num > 0 else -1.0
     try:
-        r = float(x)
+        r = num / (1 << den_exp)  # correctly rounded
     except OverflowError:
         return sign * 1.7976931348623157e308
     if r == 0.0:
         return sign * 5e-324
-    if math.isinf(r):
-        return sign * 1.7976931348623157e308
     return r
 
 
-def _orient2d_fraction(ax, ay, bx, by, cx, cy) -> float:
-    """orient2d determinant in exact rational arithmetic (rare fallback)."""
-    ax, ay, bx, by, cx, cy = (Fraction(v) for v in (ax, ay, bx, by, cx, cy))
-    return _fraction_to_float((ax - cx) * (by - cy) - (ay - cy) * (bx - cx))
+def _orient2d_integer(ax, ay, bx, by, cx, cy) -> float:
+    """orient2d determinant in exact integer arithmetic (rare fallback)."""
+    (ax, ay, bx, by, cx, cy), k = _integers((ax, ay, bx, by, cx, cy))
+    return _ratio_to_float((ax - cx) * (by - cy) - (ay - cy) * (bx - cx), 2 * k)
 
 
-def _incircle_fraction(ax, ay, bx, by, cx, cy, dx, dy) -> float:
-    """incircle determinant in exact rational arithmetic (rare fallback)."""
-    ax, ay, bx, by, cx, cy, dx, dy = (Fraction(v) for v in (ax, ay, bx, by, cx, cy, dx, dy))
+def _incircle_integer(ax, ay, bx, by, cx, cy, dx, dy) -> float:
+    """incircle determinant in exact integer arithmetic (rare fallback)."""
+    (ax, ay, bx, by, cx, cy, dx, dy), k = _integers((ax, ay, bx, by, cx, cy, dx, dy))
     adx, ady, bdx, bdy = ax - dx, ay - dy, bx - dx, by - dy
     cdx, cdy = cx - dx, cy - dy
     det = (
@@ -527,7 +545,265 @@ def _incircle_fraction(ax, ay, bx, by, cx, cy, dx, dy) -> float:
         + (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy)
         + (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady)
     )
-    return _fraction_to_float(det)
+    return _ratio_to_float(det, 4 * k)
+
+
+# ---------------------------------------------------------------------------
+# Wide-range filter: stage A with an unbounded exponent
+# ---------------------------------------------------------------------------
+# A number m * 2^e is a pair (m, e) with m = 0 or 0.5 <= |m| < 1 and e a C
+# int: products and sums of such pairs never under- or overflow, and each
+# one is rounded once, relative to its result (a sum's smaller operand can
+# lose bits below 2^-1074 of the larger one, which the filter's 2^-40 margin
+# swamps), which is all Shewchuk's bound for stage A assumes.
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _norm(m: cython.double, e: cython.int) -> tuple[cython.double, cython.int]:
+    """(m', e') with m' * 2^e' == m * 2^e and m' normalized (frexp)."""
+    k: cython.int = 0
+    if cython.compiled:
+        m = frexp(m, cython.address(k))
+    else:
+        m, k = math.frexp(m)
+    return m, e + k
+
+
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _wmul(am: cython.double, ae: cython.int, bm: cython.double, be: cython.int) -> tuple[cython.double, cython.int]:
+    return _norm(am * bm, ae + be)
+
+
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _wadd(am: cython.double, ae: cython.int, bm: cython.double, be: cython.int) -> tuple[cython.double, cython.int]:
+    if bm == 0.0:
+        return am, ae
+    if am == 0.0:
+        return bm, be
+    if ae < be:
+        am, ae, bm, be = bm, be, am, ae
+    if ae - be > 1100:  # b is below every bit of a
+        return am, ae
+    s: cython.double = am + (ldexp(bm, be - ae) if cython.compiled else math.ldexp(bm, be - ae))
+    if s == 0.0:
+        return 0.0, 0
+    return _norm(s, ae)
+
+
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _wabove(am: cython.double, ae: cython.int, bm: cython.double, be: cython.int) -> cython.bint:
+    """|a| > b for normalized pairs, b >= 0."""
+    if am == 0.0:
+        return False
+    if bm == 0.0:
+        return True
+    if ae != be:
+        return ae > be
+    return fabs(am) > bm
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _orient2d_wide_at(
+    ax: cython.double, ay: cython.double, bx: cython.double, by: cython.double, cx: cython.double, cy: cython.double,
+) -> tuple[cython.bint, cython.double]:
+    """Stage A of orient2d in unbounded-exponent arithmetic, translated to c.  (True, the
+    determinant saturated to the double range) if its sign is certain;
+    (False, 0) when the rounded differences overflow or the sign is
+    not certain."""
+    acx: cython.double = ax - cx
+    bcx: cython.double = bx - cx
+    acy: cython.double = ay - cy
+    bcy: cython.double = by - cy
+    if not (fabs(acx) <= _DBL_MAX and fabs(bcx) <= _DBL_MAX and fabs(acy) <= _DBL_MAX and fabs(bcy) <= _DBL_MAX):
+        return False, 0.0
+    lm: cython.double
+    le: cython.int
+    rm: cython.double
+    re: cython.int
+    am: cython.double
+    ae: cython.int
+    bm: cython.double
+    be: cython.int
+    am, ae = _norm(acx, 0)
+    bm, be = _norm(bcy, 0)
+    lm, le = _wmul(am, ae, bm, be)
+    am, ae = _norm(acy, 0)
+    bm, be = _norm(bcx, 0)
+    rm, re = _wmul(am, ae, bm, be)
+    dm: cython.double
+    de: cython.int
+    dm, de = _wadd(lm, le, -rm, re)
+    sm: cython.double
+    se: cython.int
+    sm, se = _wadd(fabs(lm), le, fabs(rm), re)
+    bm, be = _norm(_CCW_WIDE, 0)
+    sm, se = _wmul(sm, se, bm, be)
+    if not _wabove(dm, de, sm, se):
+        return False, 0.0
+    return True, _unscale(dm, de)
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _orient2d_wide(
+    ax: cython.double, ay: cython.double, bx: cython.double, by: cython.double, cx: cython.double, cy: cython.double,
+) -> tuple[cython.bint, cython.double]:
+    """``_orient2d_wide_at`` translated to each point in turn (the
+    determinant is invariant under cyclic shifts): the differences from a
+    point of a tiny cluster to the others in it are exact, where those from
+    a point far away lose the cluster's coordinates to rounding."""
+    ok: cython.bint
+    v: cython.double
+    ok, v = _orient2d_wide_at(ax, ay, bx, by, cx, cy)
+    if not ok:
+        ok, v = _orient2d_wide_at(bx, by, cx, cy, ax, ay)
+    if not ok:
+        ok, v = _orient2d_wide_at(cx, cy, ax, ay, bx, by)
+    return ok, v
+
+
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _wprod(x: cython.double, y: cython.double) -> tuple[cython.double, cython.int]:
+    """x * y of two doubles as a pair."""
+    xm: cython.double
+    xe: cython.int
+    ym: cython.double
+    ye: cython.int
+    xm, xe = _norm(x, 0)
+    ym, ye = _norm(y, 0)
+    return _wmul(xm, xe, ym, ye)
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _incircle_wide_at(
+    ax: cython.double, ay: cython.double, bx: cython.double, by: cython.double,
+    cx: cython.double, cy: cython.double, dx: cython.double, dy: cython.double,
+) -> tuple[cython.bint, cython.double]:
+    """Stage A of incircle in unbounded-exponent arithmetic (the operations
+    of ``_incircle_exact``'s stage A, in the same order), for coordinates too
+    far apart to be scaled into the exact stages' range, translated to d.  (True, the
+    determinant saturated to the double range) if its sign is certain;
+    (False, 0) when a rounded difference overflows or the sign is not
+    certain."""
+    adx: cython.double = ax - dx
+    bdx: cython.double = bx - dx
+    cdx: cython.double = cx - dx
+    ady: cython.double = ay - dy
+    bdy: cython.double = by - dy
+    cdy: cython.double = cy - dy
+    if not (fabs(adx) <= _DBL_MAX and fabs(bdx) <= _DBL_MAX and fabs(cdx) <= _DBL_MAX
+            and fabs(ady) <= _DBL_MAX and fabs(bdy) <= _DBL_MAX and fabs(cdy) <= _DBL_MAX):
+        return False, 0.0
+    m1: cython.double
+    e1: cython.int
+    m2: cython.double
+    e2: cython.int
+    # the three minors and their permanents
+    m1, e1 = _wprod(bdx, cdy)
+    m2, e2 = _wprod(cdx, bdy)
+    bcm: cython.double
+    bce: cython.int
+    bcm, bce = _wadd(m1, e1, -m2, e2)
+    bcpm: cython.double
+    bcpe: cython.int
+    bcpm, bcpe = _wadd(fabs(m1), e1, fabs(m2), e2)
+    m1, e1 = _wprod(cdx, ady)
+    m2, e2 = _wprod(adx, cdy)
+    cam: cython.double
+    cae: cython.int
+    cam, cae = _wadd(m1, e1, -m2, e2)
+    capm: cython.double
+    cape: cython.int
+    capm, cape = _wadd(fabs(m1), e1, fabs(m2), e2)
+    m1, e1 = _wprod(adx, bdy)
+    m2, e2 = _wprod(bdx, ady)
+    abm: cython.double
+    abe: cython.int
+    abm, abe = _wadd(m1, e1, -m2, e2)
+    abpm: cython.double
+    abpe: cython.int
+    abpm, abpe = _wadd(fabs(m1), e1, fabs(m2), e2)
+    # the lifts
+    m1, e1 = _wprod(adx, adx)
+    m2, e2 = _wprod(ady, ady)
+    alm: cython.double
+    ale: cython.int
+    alm, ale = _wadd(m1, e1, m2, e2)
+    m1, e1 = _wprod(bdx, bdx)
+    m2, e2 = _wprod(bdy, bdy)
+    blm: cython.double
+    ble: cython.int
+    blm, ble = _wadd(m1, e1, m2, e2)
+    m1, e1 = _wprod(cdx, cdx)
+    m2, e2 = _wprod(cdy, cdy)
+    clm: cython.double
+    cle: cython.int
+    clm, cle = _wadd(m1, e1, m2, e2)
+    # det = alift * bc + blift * ca + clift * ab, and its permanent
+    dm: cython.double
+    de: cython.int
+    dm, de = _wmul(alm, ale, bcm, bce)
+    m1, e1 = _wmul(blm, ble, cam, cae)
+    dm, de = _wadd(dm, de, m1, e1)
+    m1, e1 = _wmul(clm, cle, abm, abe)
+    dm, de = _wadd(dm, de, m1, e1)
+    pm: cython.double
+    pe: cython.int
+    pm, pe = _wmul(bcpm, bcpe, alm, ale)
+    m1, e1 = _wmul(capm, cape, blm, ble)
+    pm, pe = _wadd(pm, pe, m1, e1)
+    m1, e1 = _wmul(abpm, abpe, clm, cle)
+    pm, pe = _wadd(pm, pe, m1, e1)
+    m1, e1 = _norm(_ICC_WIDE, 0)
+    pm, pe = _wmul(pm, pe, m1, e1)
+    if not _wabove(dm, de, pm, pe):
+        return False, 0.0
+    return True, _unscale(dm, de)
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _incircle_wide(
+    ax: cython.double, ay: cython.double, bx: cython.double, by: cython.double,
+    cx: cython.double, cy: cython.double, dx: cython.double, dy: cython.double,
+) -> tuple[cython.bint, cython.double]:
+    """``_incircle_wide_at`` translated to each point in turn (a cyclic
+    shift of the four rows changes the determinant's sign): three points
+    1e-152 apart and a fourth 1e139 away are undecided from the far one,
+    whose differences lose the cluster's coordinates, and decided from any
+    of the three."""
+    ok: cython.bint
+    v: cython.double
+    ok, v = _incircle_wide_at(ax, ay, bx, by, cx, cy, dx, dy)
+    if ok:
+        return ok, v
+    ok, v = _incircle_wide_at(bx, by, cx, cy, dx, dy, ax, ay)
+    if ok:
+        return ok, -v
+    ok, v = _incircle_wide_at(cx, cy, dx, dy, ax, ay, bx, by)
+    if ok:
+        return ok, v
+    ok, v = _incircle_wide_at(dx, dy, ax, ay, bx, by, cx, cy)
+    return ok, -v
 
 
 # ---------------------------------------------------------------------------
@@ -565,13 +841,18 @@ def orient2d_adaptive(
         return 0.0
     if status == _NONFINITE:
         return orient2d_fast(ax, ay, bx, by, cx, cy)
+    ok: cython.bint
+    v: cython.double
     if status == _WIDE:
+        ok, v = _orient2d_wide(ax, ay, bx, by, cx, cy)
+        if ok:
+            return v
         with cython.gil:
-            return _orient2d_fraction(ax, ay, bx, by, cx, cy)
+            return _orient2d_integer(ax, ay, bx, by, cx, cy)
     if k == 0:
         return _orient2d_exact(ax, ay, bx, by, cx, cy)
     s: cython.double = ldexp(1.0, k)
-    v: cython.double = _orient2d_exact(ax * s, ay * s, bx * s, by * s, cx * s, cy * s)
+    v = _orient2d_exact(ax * s, ay * s, bx * s, by * s, cx * s, cy * s)
     return _unscale(v, -2 * k)
 
 
@@ -707,13 +988,18 @@ def incircle_adaptive(
         return 0.0
     if status == _NONFINITE:
         return incircle_fast(ax, ay, bx, by, cx, cy, dx, dy)
+    ok: cython.bint
+    v: cython.double
     if status == _WIDE:
+        ok, v = _incircle_wide(ax, ay, bx, by, cx, cy, dx, dy)
+        if ok:
+            return v
         with cython.gil:
-            return _incircle_fraction(ax, ay, bx, by, cx, cy, dx, dy)
+            return _incircle_integer(ax, ay, bx, by, cx, cy, dx, dy)
     if k == 0:
         return _incircle_exact(ax, ay, bx, by, cx, cy, dx, dy)
     s: cython.double = ldexp(1.0, k)
-    v: cython.double = _incircle_exact(ax * s, ay * s, bx * s, by * s, cx * s, cy * s, dx * s, dy * s)
+    v = _incircle_exact(ax * s, ay * s, bx * s, by * s, cx * s, cy * s, dx * s, dy * s)
     return _unscale(v, -4 * k)
 
 

@@ -165,8 +165,22 @@ def _small_input_angle(m: Mesh, segs: Subsegments, u: Index, v: Index) -> cython
         j = a1
     if j < 0:
         return False
-    d1: cython.double = (xy[u, 0] - xy[j, 0]) * (xy[u, 0] - xy[j, 0]) + (xy[u, 1] - xy[j, 1]) * (xy[u, 1] - xy[j, 1])
-    d2: cython.double = (xy[v, 0] - xy[j, 0]) * (xy[v, 0] - xy[j, 0]) + (xy[v, 1] - xy[j, 1]) * (xy[v, 1] - xy[j, 1])
+    ux: cython.double = xy[u, 0] - xy[j, 0]
+    uy: cython.double = xy[u, 1] - xy[j, 1]
+    vx: cython.double = xy[v, 0] - xy[j, 0]
+    vy: cython.double = xy[v, 1] - xy[j, 1]
+    # squares overflow beyond 2^511 (inf < inf: no exemption) and vanish
+    # below 2^-537: out of range, compare the vectors scaled by a power of two
+    big: cython.double = max(max(fabs(ux), fabs(uy)), max(fabs(vx), fabs(vy)))
+    f: cython.double
+    if not (big <= 2.0**240 and big >= 2.0**-240) and big > 0.0:
+        f = unit_scale(big)
+        ux *= f
+        uy *= f
+        vx *= f
+        vy *= f
+    d1: cython.double = ux * ux + uy * uy
+    d2: cython.double = vx * vx + vy * vy
     return 0.999 * d2 < d1 < 1.001 * d2
 
 

@@ -17,7 +17,9 @@ from __future__ import annotations
 import cython
 from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, Index, Mesh, lnext, lprev
 from cython.cimports.instrument.core.navigate import find_edge
+from cython.cimports.instrument.core.scaling import unit_scale
 from cython.cimports.instrument.refine.state import Refiner
+from cython.cimports.libc.math import fabs
 
 
 @cython.ccall
@@ -74,6 +76,17 @@ def in_lens(r: Refiner, m: Mesh, e0: Index, e1: Index, ax: cython.double, ay: cy
     uy: cython.double = xy[e0, 1] - ay
     vx: cython.double = xy[e1, 0] - ax
     vy: cython.double = xy[e1, 1] - ay
+    # the lens test is of degree 4: beyond 2^+-120 it over- or underflows
+    # (at 2^300 both sides were infinite and every apex encroached); there
+    # the vectors are scaled by a power of two, which changes no result
+    big: cython.double = max(max(fabs(ux), fabs(uy)), max(fabs(vx), fabs(vy)))
+    f: cython.double
+    if not (big <= 2.0**120 and big >= 2.0**-120) and big > 0.0:
+        f = unit_scale(big)
+        ux *= f
+        uy *= f
+        vx *= f
+        vy *= f
     dot: cython.double = ux * vx + uy * vy
     if dot >= 0.0:
         return False

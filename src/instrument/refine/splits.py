@@ -79,6 +79,34 @@ ALONG_SEGMENT = cython.declare(cython.double, 2.0**-30)
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
+def _on_subsegment_scaled(
+    ax: cython.double, ay: cython.double, bx: cython.double, by: cython.double,
+    px: cython.double, py: cython.double, f: cython.double,
+) -> cython.bint:
+    """``_on_subsegment`` of the points a, b, p multiplied by ``f``."""
+    ax *= f
+    ay *= f
+    bx *= f
+    by *= f
+    px *= f
+    py *= f
+    ex: cython.double = bx - ax
+    ey: cython.double = by - ay
+    cx: cython.double = px - ax
+    cy: cython.double = py - ay
+    scale: cython.double = max(fabs(ax), fabs(ay), fabs(bx), fabs(by), fabs(px), fabs(py))
+    cross: cython.double = ex * cy - ey * cx
+    dot: cython.double = ex * cx + ey * cy
+    if not (fabs(cross) <= ON_SEGMENT * scale * sqrt(ex * ex + ey * ey) and 0.0 < dot < ex * ex + ey * ey):
+        return False
+    dist: cython.double = fabs(orient2d(ax, ay, bx, by, px, py)) / hypot(ex, ey)
+    near: cython.double = min(hypot(cx, cy), hypot(px - bx, py - by))
+    return dist <= ALONG_SEGMENT * near
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
 def _on_subsegment(m: Mesh, a: Index, b: Index, c: Index) -> cython.bint:
     """Does vertex ``c`` lie on the segment ``a b`` up to rounding, between its ends?"""
     xy = m.xy
@@ -87,6 +115,13 @@ def _on_subsegment(m: Mesh, a: Index, b: Index, c: Index) -> cython.bint:
     cx: cython.double = xy[c, 0] - xy[a, 0]
     cy: cython.double = xy[c, 1] - xy[a, 1]
     scale: cython.double = max(fabs(xy[a, 0]), fabs(xy[a, 1]), fabs(xy[b, 0]), fabs(xy[b, 1]), fabs(xy[c, 0]), fabs(xy[c, 1]))
+    # squares overflow beyond 2^511 (every vertex lay on every subsegment)
+    # and vanish below 2^-537: out of range, the test runs on the points
+    # scaled by a power of two (exact upward; downward only bits below
+    # 2^-1000 of the extent go)
+    big: cython.double = max(max(fabs(ex), fabs(ey)), max(fabs(cx), fabs(cy)))
+    if not (big <= 2.0**240 and big >= 2.0**-240) and big > 0.0:
+        return _on_subsegment_scaled(xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[c, 0], xy[c, 1], unit_scale(big))
     cross: cython.double = ex * cy - ey * cx
     dot: cython.double = ex * cx + ey * cy
     if not (fabs(cross) <= ON_SEGMENT * scale * sqrt(ex * ex + ey * ey) and 0.0 < dot < ex * ex + ey * ey):

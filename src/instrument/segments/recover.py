@@ -472,7 +472,10 @@ def _flip_out(
         m.work[C_ORIENT] += 2
         sx = orient2d(ax, ay, bx, by, xy[x, 0], xy[x, 1])
         sy = orient2d(ax, ay, bx, by, xy[y, 0], xy[y, 1])
-        if x != a and x != b and y != a and y != b and sx * sy < 0.0:
+        # signs compared, not their product: orient2d's values are of degree
+        # 2, and near 2^-512 two of them multiply to 0 (a crossing edge left
+        # unflipped, and the segment could not be recovered)
+        if x != a and x != b and y != a and y != b and ((sx < 0.0 and sy > 0.0) or (sx > 0.0 and sy < 0.0)):
             # still crosses: queue it again, right end first
             if sx < 0.0:
                 qr[(head + left) % n] = x
