@@ -230,11 +230,11 @@ def _ahead(xy: cython.double[:, ::1], a: Index, b: Index, v: Index) -> cython.bi
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
-def _turn_to_edge(m: Mesh, b: Index, e0: Index, plain: Index) -> tuple[Index, cython.int, Index]:
+def _turn_to_edge(m: Mesh, b: Index, e0: Index, plain: Index) -> tuple[Index, cython.int]:
     """``turn_to``'s answer where the piece is an edge already, found by
-    vertex numbers alone: ``(e, where, visits)`` for the first triangle of
+    vertex numbers alone: ``(e, where)`` for the first triangle of
     ``turn_to``'s turn (counter-clockwise, then clockwise from ``e0``) with
-    ``b`` as a corner, or ``(-1, -1, 0)`` if there is none, or if a
+    ``b`` as a corner, or ``(-1, -1)`` if there is none, or if a
     crossing vertex (``plain`` or above) comes first.
 
     Among input vertices (exact orientations) ``turn_to`` stops at that
@@ -243,28 +243,25 @@ def _turn_to_edge(m: Mesh, b: Index, e0: Index, plain: Index) -> tuple[Index, cy
     strictly inside it, as the mesh is a triangulation.  A crossing vertex
     could pass ``_side``'s tolerance, so the turn gives up there.  Most
     segments of large inputs are edges of the Delaunay triangulation, and
-    this spares their orientation tests (``visits`` lets the caller count
-    them as made)."""
+    this spares their orientation tests (none is made, so none is counted)."""
     e: Index
     d: Index
     x: Index
     nxt: Index
     tw: Index
-    visits: Index = 0
     for direction in range(2):
         e = e0
         for _ in range(m.stamp.shape[0]):
-            visits += 1
             d = m.corner[lprev(e)]
             x = m.corner[e]
             if d == b:
-                return e, 1, visits
+                return e, 1
             if d >= plain:
-                return -1, -1, 0
+                return -1, -1
             if x == b:
-                return e, 2, visits
+                return e, 2
             if x >= plain:
-                return -1, -1, 0
+                return -1, -1
             if direction == 0:
                 nxt = m.twin[lprev(e)]
             else:
@@ -273,7 +270,7 @@ def _turn_to_edge(m: Mesh, b: Index, e0: Index, plain: Index) -> tuple[Index, cy
             if nxt == NO_EDGE or nxt == e0:
                 break
             e = nxt
-    return -1, -1, 0
+    return -1, -1
 
 
 @cython.ccall
@@ -297,11 +294,9 @@ def turn_to(m: Mesh, a: Index, b: Index, e0: Index, plain: Index, sa: Index, sb:
     od: cython.double
     ox: cython.double
     where: cython.int
-    visits: Index
     if a < plain and b < plain:
-        e, where, visits = _turn_to_edge(m, b, e0, plain)
-        if e >= 0:
-            m.work[C_ORIENT] += 2 * visits  # the two tests per triangle the turn below makes
+        e, where = _turn_to_edge(m, b, e0, plain)
+        if e >= 0:  # found by vertex numbers: no orientation test was made (the counter counts calls)
             return e, where
     for direction in range(2):  # counter-clockwise, then clockwise from e0
         e = e0
