@@ -2,52 +2,65 @@
 
 The overlap and segment checks test exact predicates on pairs (triangle,
 segment) whose boxes meet; testing all pairs would be quadratic.  Each box
-goes to the grid level whose cell size is at least its size (powers of two
-times a base size near the median triangle), so it touches at most 3 x 3
-cells there; a pair is found at the level of the larger of its two boxes.
+goes to the grid level whose cells are the smallest power of two at least
+its size, so it touches at most 2 x 2 cells there; a pair is found at the
+level of the larger of its two boxes.
+
+The levels are not bounded below by the input's extent: a mesh graded over
+hundreds of decades (1e-304 near one corner, 1e300 across) puts its tiny
+triangles in cells of their own size, not all in one cell at the finest
+level a fixed-width integer index allows, where every pair of them would be
+a candidate.  A cell's index is ``floor(x / 2^level)`` as a double: dividing
+by a power of two and flooring are exact (or monotone where they round, near
+the subnormals), so boxes whose intervals overlap always share a cell, and a
+box is never narrower than the spacing of doubles at its coordinates, so the
+index stays below 2^53 and the neighbouring index ``+ 1`` is exact.
 """
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
-
-_CELL_BITS = 30
-
-
-def _levels(dim, h0):
-    with np.errstate(divide="ignore", over="ignore", invalid="ignore"):
-        lev = np.ceil(np.log2(np.maximum(dim, h0 * 2.0**-60) / h0))
-    lev = np.clip(np.nan_to_num(lev, posinf=2000), 0, 2000).astype(np.int64)
-    with np.errstate(over="ignore"):
-        lev += dim > np.ldexp(h0, lev)  # guard against log2 rounding
-    return lev
+_TOP = 1024  # 2^1024 is no double: a box that size (or larger) is at the top level, one cell
+_BOTTOM = -1074  # the smallest subnormal
+_LARGEST = np.finfo(np.float64).max
 
 
-def _cells(box, lev, h0, x0, y0):
-    """Grid cells (at level lev, scalar) touched by the boxes: (object, key)."""
-    s = math.ldexp(h0, int(min(lev, 2000)))  # may be inf: then one cell
+def _levels(dim: np.ndarray) -> np.ndarray:
+    """The smallest exponent e with dim <= 2^e, per box."""
+    mant, exp = np.frexp(dim)  # dim = mant * 2^exp, mant in [0.5, 1) (0 for 0)
+    lev = exp.astype(np.int64) - (mant == 0.5)  # a power of two is its own cell size
+    lev = np.where(dim > 0, lev, _BOTTOM)
+    lev = np.where(np.isinf(dim), _TOP, lev)
+    return np.clip(lev, _BOTTOM, _TOP)
 
-    def index(x, origin):
-        # monotone in x, so overlapping intervals always share a cell
-        with np.errstate(all="ignore"):
-            return np.floor(np.clip((x - origin) / s, 0.0, 2.0**29)).astype(np.int64)
 
-    ix0, ix1 = index(box[:, 0], x0), index(box[:, 1], x0)
-    iy0, iy1 = index(box[:, 2], y0), index(box[:, 3], y0)
+def _cells(box: np.ndarray, lev: int) -> tuple[np.ndarray, np.ndarray]:
+    """Grid cells of level ``lev`` that the boxes touch: (box, cell) pairs,
+    a cell as a complex number (x index + y index * 1j)."""
+    def index(x):
+        if lev >= _TOP:
+            return np.zeros_like(x)
+        with np.errstate(all="ignore"):  # beyond the doubles (only a zero-size box's level): the largest one
+            return np.clip(np.floor(np.ldexp(x, -lev)), -_LARGEST, _LARGEST)
+
+    ix0, ix1 = index(box[:, 0]), index(box[:, 1])
+    iy0, iy1 = index(box[:, 2]), index(box[:, 3])
     objs, keys = [], []
     ar = np.arange(len(box))
-    for dx in range(3):
+    for dx in range(3):  # a box at most one cell wide touches 2 cells per axis; 3 allows for rounding
         for dy in range(3):
             mask = (ix0 + dx <= ix1) & (iy0 + dy <= iy1)
             objs.append(ar[mask])
-            keys.append(((ix0[mask] + dx) << _CELL_BITS) + iy0[mask] + dy)
+            key = np.empty(int(mask.sum()), dtype=np.complex128)  # not x + 1j * y: 1j * inf is nan + inf j
+            key.real = ix0[mask] + dx
+            key.imag = iy0[mask] + dy
+            keys.append(key)
     return np.concatenate(objs), np.concatenate(keys)
 
 
 def join_keys(a_obj, a_key, b_obj, b_key):
+    """Every (a, b) pair with equal keys (any sortable dtype)."""
     order = np.argsort(b_key, kind="stable")
     bk = b_key[order]
     bo = b_obj[order]
@@ -63,38 +76,30 @@ def join_keys(a_obj, a_key, b_obj, b_key):
 
 
 def box_pairs(tbox, ebox):
-    """Candidate (triangle, edge) pairs whose closed bounding boxes overlap."""
-    allb = np.concatenate([tbox, ebox])
-    x0, y0 = allb[:, 0].min(), allb[:, 2].min()
-    span = max(allb[:, 1].max() - x0, allb[:, 3].max() - y0)
-    tdim = np.maximum(tbox[:, 1] - tbox[:, 0], tbox[:, 3] - tbox[:, 2])
-    edim = np.maximum(ebox[:, 1] - ebox[:, 0], ebox[:, 3] - ebox[:, 2])
-    h0 = float(np.median(tdim)) if len(tdim) else 1.0
-    h0 = max(h0, span * 2.0**-28, 2.0**-1000)
-    h0 = 2.0 ** min(math.ceil(math.log2(h0)), 1000) if math.isfinite(h0) else 2.0**1000
-    tl = _levels(tdim, h0)
-    el = _levels(edim, h0)
+    """Candidate (triangle, edge) pairs whose closed bounding boxes overlap.
+    Boxes are rows (xmin, xmax, ymin, ymax) of finite doubles."""
+    with np.errstate(over="ignore"):  # a width beyond the largest double: inf, the top level
+        tdim = np.maximum(tbox[:, 1] - tbox[:, 0], tbox[:, 3] - tbox[:, 2])
+        edim = np.maximum(ebox[:, 1] - ebox[:, 0], ebox[:, 3] - ebox[:, 2])
+        tl = _levels(tdim)
+        el = _levels(edim)
     pairs_t, pairs_e = [], []
-    for lev in np.unique(tl):
-        ti = np.flatnonzero(tl == lev)
-        ei = np.flatnonzero(el <= lev)
-        if not ei.size:
-            continue
-        to, tk = _cells(tbox[ti], lev, h0, x0, y0)
-        eo, ek = _cells(ebox[ei], lev, h0, x0, y0)
-        a, b = join_keys(to, tk, eo, ek)
-        pairs_t.append(ti[a])
-        pairs_e.append(ei[b])
-    for lev in np.unique(el):
-        ei = np.flatnonzero(el == lev)
-        ti = np.flatnonzero(tl < lev)
-        if not ti.size:
-            continue
-        to, tk = _cells(tbox[ti], lev, h0, x0, y0)
-        eo, ek = _cells(ebox[ei], lev, h0, x0, y0)
-        a, b = join_keys(to, tk, eo, ek)
-        pairs_t.append(ti[a])
-        pairs_e.append(ei[b])
+    for big, small, blev, slev, flip in ((tbox, ebox, tl, el, False), (ebox, tbox, el, tl, True)):
+        for lev in np.unique(blev):
+            bi = np.flatnonzero(blev == lev)
+            # the larger box's level finds the pair; ties (equal levels) once, with the triangles
+            si = np.flatnonzero(slev < lev if flip else slev <= lev)
+            if not si.size:
+                continue
+            bo, bk = _cells(big[bi], int(lev))
+            so, sk = _cells(small[si], int(lev))
+            a, b = join_keys(bo, bk, so, sk)
+            if flip:
+                pairs_t.append(si[b])
+                pairs_e.append(bi[a])
+            else:
+                pairs_t.append(bi[a])
+                pairs_e.append(si[b])
     if not pairs_t:
         return np.zeros(0, np.int64), np.zeros(0, np.int64)
     pt = np.concatenate(pairs_t)
