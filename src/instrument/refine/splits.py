@@ -288,6 +288,30 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
     n: Index
     nb: Index
     n, nb = collect_cavity(r, m, px, py, e // 3, t1, e)
+    # The split point, rounded, may land on or beyond the line of a rim edge:
+    # a hull segment's pieces shrink towards its end C (to ~1e-17 beside
+    # coordinates ~1e-3), encroached by an input vertex D 4e-193 from C, and
+    # the point rounds onto the line C D. The fan would hold a flat or
+    # inverted triangle (Triangle outputs it). That rim edge joins an end to
+    # the apex D, which then lies on the subsegment within the rounding the
+    # split points themselves have: split at D instead (the encroachment
+    # ends), or, for any other rim edge, run out of precision.
+    apex_e: Index = m.corner[e]
+    apex_t: Index = m.corner[tw] if tw != NO_EDGE else -1
+    u: Index
+    w: Index
+    for j in range(nb):
+        u = r.bnd[j, 1]
+        w = r.bnd[j, 2]
+        if orient2d(px, py, xy[u, 0], xy[u, 1], xy[w, 0], xy[w, 1]) <= 0.0:
+            forget_cavity(r, m, n)
+            if u == apex_e or w == apex_e:
+                return _split_at_apex(r, m, segs, e, e, triangles)
+            if apex_t >= 0 and (u == apex_t or w == apex_t):
+                return _split_at_apex(r, m, segs, e, tw, triangles)
+            r.error_org = o
+            r.error_dest = d
+            return PRECISION
     if not has_room(r, m, nb) or segs.count >= segs.marker.shape[0]:
         forget_cavity(r, m, n)
         step_undone(r, m.work)
@@ -298,7 +322,6 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
     v: Index = new_vertex(m, px, py, V_SEGMENT, segs.marker[rec], e0, e1, e0, split, 0.0)
     fill_cavity(r, m, v, n, nb)
     t: Index
-    w: Index
     for j in range(nb):  # the halves: spokes to o and d (edge 2 of (v, o|d, x), edge 1 of (v, x, o|d))
         t = r.fan[j]
         for k in range(1, 3):
