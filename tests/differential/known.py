@@ -72,8 +72,11 @@ def hole_on_segment(case: Case) -> bool:
 def point_on_vertex(case: Case) -> bool:
     """A hole or region point exactly at an input vertex."""
     v = {tuple(p) for p in np.asarray(case.input["vertices"], dtype=np.float64).reshape(-1, 2).tolist()}
-    pts = [np.asarray(case.input.get(k, np.zeros((0, 2))), dtype=np.float64) for k in ("holes", "regions")]
-    return any(tuple(p[:2]) in v for a in pts for p in a.reshape(len(a), -1).tolist())
+    for key in ("holes", "regions"):
+        a = np.asarray(case.input.get(key, np.zeros((0, 2))), dtype=np.float64)
+        if a.size and any(tuple(p[:2]) in v for p in a.reshape(len(a), -1).tolist()):
+            return True
+    return False
 
 
 DEFECTS = [
@@ -159,8 +162,10 @@ DEFECTS += [
         "pick different ones, so one eats the polygon from inside and the other only a triangle outside it: a "
         "random polygon with a hole at one of its vertices under pQ differs in 7 of 60 draws, both ways (Triangle "
         "14 triangles, ours 0 in regressions/hole-on-vertex.json)",
-        lambda c, f, n: point_on_vertex(c) and not read_switches(c.switches).i and f.kind in (
-            "count", "area-total", "markers", "size", "region-area", "region-attribute", "attributes"),
+        lambda c, f, n: point_on_vertex(c) and not read_switches(c.switches).i and (f.kind in (
+            "count", "area-total", "markers", "size", "region-area", "region-attribute", "attributes")
+            # under Y the area bound can be unreachable in ours' (larger) domain where Triangle's met it
+            or (f.kind == "invalid-mesh" and read_switches(c.switches).Y and " has area " in f.message)),
     ),
 ]
 

@@ -54,3 +54,18 @@ def test_with_more_points_around():
     for switches in ("za0.005iQ", "a0.005Q"):
         out = instrument.triangulate({"vertices": pts}, switches)
         assert check_mesh(out, max_area=0.005) == []
+
+
+@pytest.mark.parametrize(("area", "vertices"), [("0.00000000000000000501", 153), ("0.00000000000000001", 77), ("0.0000000000000001", 11)])
+def test_a_sliver_is_split_along_its_length(area, vertices):
+    """A sliver of length 1 and width 1e-15: the midpoint (0.5, -5e-16) of
+    one long side was taken as lying on the other long side within rounding
+    (a tolerance of units in the last place of the largest coordinate, 1,
+    where the y coordinates round 1e-31 apart), and the split there failed:
+    PrecisionError. Triangle meshes it with 153, 77 and 11 vertices; so does
+    ours now."""
+    sliver = {"vertices": np.array([[0.0, 0.0], [1.0, 2.6226043701171877e-18], [1.0, -1e-15]]),
+              "segments": np.array([[0, 1], [1, 2], [2, 0]])}
+    out = instrument.triangulate(sliver, f"pa{area}Q")
+    assert check_mesh(out, pslg=sliver, max_area=float(area)) == []
+    assert len(out["vertices"]) == vertices

@@ -66,10 +66,13 @@ from cython.cimports.libc.math import fabs, hypot, sqrt
 PAUSE_EVERY = cython.declare(Index, 1 << 14)
 
 #: A vertex this close to a subsegment's line (relative to the largest
-#: coordinate of the three points) lies on it up to rounding: a few units in
-#: the last place, where split points that were moved onto the line once and
-#: printed with 17 digits land.
+#: coordinate of the three points on each axis) lies on it up to rounding: a
+#: few units in the last place, where split points that were moved onto the
+#: line once and printed with 17 digits land.
 ON_SEGMENT = cython.declare(cython.double, 2.0**-50)
+
+#: half a unit in the last place, relative
+HALF_ULP = cython.declare(cython.double, 2.0**-53)
 
 #: ... and its distance from the line is below this fraction of its distance
 #: from the nearer end (an angle below 2^-30 radians seen from that end).
@@ -86,10 +89,22 @@ def _on_subsegment(m: Mesh, a: Index, b: Index, c: Index) -> cython.bint:
     ey: cython.double = xy[b, 1] - xy[a, 1]
     cx: cython.double = xy[c, 0] - xy[a, 0]
     cy: cython.double = xy[c, 1] - xy[a, 1]
-    scale: cython.double = max(fabs(xy[a, 0]), fabs(xy[a, 1]), fabs(xy[b, 0]), fabs(xy[b, 1]), fabs(xy[c, 0]), fabs(xy[c, 1]))
+    # Rounding moves a point by units in the last place of each coordinate,
+    # and a move along x shifts it off the line by |ey| / length of that: the
+    # tolerance takes each axis's largest coordinate times the other
+    # component; and a vertex within half a unit in the last place of the
+    # largest coordinate is on it in any case (no split point can be placed
+    # between it and the line). One scale for both axes admitted the midpoint
+    # of a sliver's other long side, 5e-16 below a segment along the x axis
+    # of length 1, whose y coordinates round 1e-31 apart: the split at it
+    # failed (PrecisionError, where Triangle meshes the sliver).
+    xscale: cython.double = max(fabs(xy[a, 0]), fabs(xy[b, 0]), fabs(xy[c, 0]))
+    yscale: cython.double = max(fabs(xy[a, 1]), fabs(xy[b, 1]), fabs(xy[c, 1]))
+    length: cython.double = sqrt(ex * ex + ey * ey)
     cross: cython.double = ex * cy - ey * cx
     dot: cython.double = ex * cx + ey * cy
-    if not (fabs(cross) <= ON_SEGMENT * scale * sqrt(ex * ex + ey * ey) and 0.0 < dot < ex * ex + ey * ey):
+    tol: cython.double = ON_SEGMENT * (xscale * fabs(ey) + yscale * fabs(ex)) + HALF_ULP * max(xscale, yscale) * length
+    if not (fabs(cross) <= tol and 0.0 < dot < ex * ex + ey * ey):
         return False
     # ... and near the line next to its own distance from the ends: the units
     # in the last place above are of the largest coordinate, which at mixed
