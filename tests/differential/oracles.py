@@ -636,10 +636,16 @@ def _equal_counts(v: Verdict, case: Case, sw: Switches, t_res: dict, res: dict) 
         if left_off:
             v.notes["triangle_left_vertices_off_segments"] = left_off
     for key in ("vertices", "triangles", "segments", "edges", "neighbors"):
-        if key == "vertices" and o2_differs:
-            continue
+        if key == "vertices" and (o2_differs or (left_off and sw.j)):
+            continue  # (under j Triangle jettisons such a vertex when no triangle uses it)
         if key == "segments" and left_off and n_rows(res, key) - n_rows(t_res, key) == left_off:
             continue  # ours splits the segments at those vertices
+        if key in ("triangles", "edges", "neighbors") and left_off:
+            # that vertex is a corner of ours' triangles along the segment, of
+            # none of Triangle's (three segments crossing around (0, 0) on one of
+            # them under pQ: Triangle's crossing triangle is one, ours two;
+            # regressions/crossing-through-vertex-counts.json); the areas agree
+            continue
         if n_rows(t_res, key) != n_rows(res, key):
             v.fail("count", key, f"{key}: Triangle {n_rows(t_res, key)}, ours {n_rows(res, key)}")
     n_in = len(case.input["vertices"])
@@ -658,7 +664,9 @@ def _equal_counts(v: Verdict, case: Case, sw: Switches, t_res: dict, res: dict) 
             v.fail("markers", detail, f"input vertex {i}: Triangle's marker {tm[i]}, ours {om[i]} "
                    f"({len(diff)} input vertices differ)")
     for key in ("vertex_markers", "segment_markers", "edge_markers"):
-        if key == "vertex_markers" and (o2_differs or outside_only):
+        if key == "vertex_markers" and (o2_differs or outside_only or (left_off and sw.j)):
+            continue
+        if key == "edge_markers" and left_off:
             continue
         tm = Counter(_arr(t_res, key, 1).reshape(-1).tolist())
         om = Counter(_arr(res, key, 1).reshape(-1).tolist())
