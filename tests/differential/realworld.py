@@ -34,14 +34,15 @@ from .shrink import shrink
 ROOT = Path(__file__).resolve().parents[2]
 CORPUS = Path("/work/shared/corpus")
 #: whole-mesh inputs (.ele) are refined only: r switches
-MESH_SWITCHES = ("r", "rq30", "rq30a", "ra{a}", "rq30a{a}", "rpq30a", "rD", "ru")
-#: {a} is an area bound, a fraction of the bounding-box area
+MESH_SWITCHES = ("r", "rq30", "rq30a", "ra{a}", "rq30a{a}", "rpq30a", "rD", "ru", "rq33", "rq30a{a2}")
+#: {a} (1 %) and {a2} (0.1 %) are area bounds, fractions of the bounding-box area
 PSLG_SWITCHES = (
     "p", "pq", "pq30", "pq33", "pq30a{a}", "pq30Aa", "pq30Aa{a}", "pA", "pqD", "pq30Y", "pq30YY", "pq30S50",
     "pq30o2", "pq30e", "pq30n", "pq30v", "pc", "pcq", "pq30i", "pq30F", "pq30l", "pq30u", "pq30ua{a}",
-    "pq30j", "pq34", "pq20a{a}o2en", "pcq30a{a}", "pDa{a}",
+    "pq30j", "pq34", "pq20a{a}o2en", "pcq30a{a}", "pDa{a}", "pq25", "pq28.6", "pq32", "pq30a{a2}", "pqa", "pq30YYa{a}",
 )
-POINT_SWITCHES = ("", "q", "q30", "q30a{a}", "D", "c", "cq30", "i", "F", "l", "v", "e", "n", "o2", "Y", "u")
+POINT_SWITCHES = ("", "q", "q30", "q30a{a}", "q30a{a2}", "D", "c", "cq30", "i", "F", "l", "v", "e", "n", "o2", "Y", "u",
+                  "q33", "cq25a{a}")
 #: r refinement of Triangle's own mesh: (premesh, switches, per-triangle area factors)
 REFINE = (
     ("pQ", "rpq30aQ", (0.01, 0.002, -1.0)),
@@ -83,14 +84,14 @@ def area_for(tri: dict, frac: float = 0.01) -> str:
 
 
 def cases_for(name: str, tri: dict) -> list[Case]:
-    a = area_for(tri)
+    a, a2 = area_for(tri), area_for(tri, 0.001)
     if "triangles" in tri:
         sws = MESH_SWITCHES
     elif "segments" in tri and len(tri["segments"]):
         sws = PSLG_SWITCHES
     else:
         sws = POINT_SWITCHES
-    out = [Case(family="realworld", switches=sw.format(a=a) + "Q", input=tri, meta={"file": name}) for sw in sws]
+    out = [Case(family="realworld", switches=sw.format(a=a, a2=a2) + "Q", input=tri, meta={"file": name}) for sw in sws]
     if "segments" in tri and "triangles" not in tri:
         for pre, sw, factors in REFINE:
             out.append(Case(family="realworld", switches=sw, input=tri, premesh=pre, area_factors=factors,
