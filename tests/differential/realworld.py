@@ -75,7 +75,11 @@ def inputs() -> list[tuple[str, dict]]:
             continue
         if path.suffix == ".node" and (d / (path.stem + ".ele")).exists() and path.parent == d:
             tri = read(d / (path.stem + ".ele"))  # a whole mesh: refined with r
-        out.append((f"{path.parent.name}/{path.name}", {k: np.asarray(v) for k, v in tri.items()}))
+        # an empty hole or region list (a .poly with 0 holes) makes the triangle
+        # package fail (IndexError: out of bounds on buffer access), so that
+        # Triangle's answer would be no reference: leave such lists out
+        tri = {k: np.asarray(v) for k, v in tri.items() if not (k in ("holes", "regions") and len(v) == 0)}
+        out.append((f"{path.parent.name}/{path.name}", tri))
     return out
 
 
