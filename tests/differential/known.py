@@ -201,6 +201,17 @@ DEFECTS += [
     ),
 ]
 
+DEFECTS += [
+    Defect(
+        "huge-sliver-overrefined",
+        "quality refinement of a 0.6-degree sliver at 1e300 ((0, 0), (1e300, 1.5e294), (1e300, -1e298) under "
+        "qpi) makes 27281 vertices where the same input scaled to ~1 makes 89 (refinement is not scale-invariant "
+        "up there), and the exact checker's box join on that mesh lists 662 million candidate pairs "
+        "(MemoryError, 4.9 GiB)",
+        lambda c, f, n: huge(c) and read_switches(c.switches).q and f.kind == "checker-error",
+    ),
+]
+
 BY_ID = {d.id: d for d in DEFECTS}
 
 
