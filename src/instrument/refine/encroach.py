@@ -17,6 +17,8 @@ from __future__ import annotations
 import cython
 from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, Index, Mesh, lnext, lprev
 from cython.cimports.instrument.core.navigate import find_edge
+from cython.cimports.instrument.core.scaling import unit_scale
+from cython.cimports.libc.math import fabs
 from cython.cimports.instrument.refine.state import Refiner
 
 
@@ -74,6 +76,18 @@ def in_lens(r: Refiner, m: Mesh, e0: Index, e1: Index, ax: cython.double, ay: cy
     uy: cython.double = xy[e0, 1] - ay
     vx: cython.double = xy[e1, 0] - ax
     vy: cython.double = xy[e1, 1] - ay
+    # beyond 2^240 the products below overflow (at 1e301 the dot product was
+    # inf - inf = NaN, taken as encroaching: 3 points under D made 6306
+    # vertices and edges that are not locally Delaunay, where the same points
+    # at 1e150 make 10); below 2^-240 they underflow: scale by a power of two
+    big: cython.double = max(max(fabs(ux), fabs(uy)), max(fabs(vx), fabs(vy)))
+    f: cython.double
+    if big > 2.0**240 or (big < 2.0**-240 and big > 0.0):
+        f = unit_scale(big)
+        ux *= f
+        uy *= f
+        vx *= f
+        vy *= f
     dot: cython.double = ux * vx + uy * vy
     if dot >= 0.0:
         return False
