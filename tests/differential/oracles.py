@@ -454,6 +454,13 @@ def _judge(case: Case, tri: Outcome, ours: Outcome, spread) -> Verdict:
         allowed = ours.exc_type in ALLOWED_ERRORS or ENGINE_ERROR in ours.exc_mro
         if not allowed or not ours.message.strip():
             v.fail("ours-exception", ours.exc_type, f"ours raises {ours.exc_type}: {ours.message}\n{ours.traceback}")
+        elif ours.exc_type == "SizeLimitError" and sw.refining and extreme_extent(case.input):
+            # Triangle's quality test overflows there and stops early: its mesh
+            # is no size reference (a 1 x 1e-14 parallelogram at 1e200 under
+            # pq: Triangle keeps 2 triangles; at 1e100 it makes 96, at scale 1
+            # it fails; a 20-degree mesh of it has ~1e14 triangles, and ours
+            # stops at its vertex limit at every scale)
+            v.notes["triangle_no_reference"] = "extreme scale: ours stops at its vertex limit"
         elif t_ok and (n_rows(tri.result, "triangles") or ordinary_scale(case.input)):
             # at extreme scales an empty answer of Triangle's is no better than a clear error
             v.fail("ours-error-where-triangle-meshes", ours.exc_type,
@@ -525,6 +532,16 @@ def _judge(case: Case, tri: Outcome, ours: Outcome, spread) -> Verdict:
     finite = math.isfinite(t_area) and math.isfinite(o_area)  # areas of ~1e300 meshes overflow
     slack = rounding_slack(t_res, res) if finite else 0.0
     if finite and not _close(t_area, o_area, scale, slack):
+        if sw.p and not sw.r and n_rows(res, "segments") > n_rows(t_res, "segments") and (
+                left_off := vertices_left_off_segments(case, t_res, res)):
+            # Triangle's subsegments skip an input vertex that lies exactly on
+            # an input segment (a crossing came first), ours end there: the
+            # triangles that piece encloses are eaten by Triangle, kept by ours
+            # (three crossing segments through a vertex under p: Triangle 0
+            # triangles, ours 1; regressions/crossing-through-vertex-domain.json).
+            # Domains differ, so Triangle's mesh is no reference
+            v.notes["triangle_no_reference"] = f"{left_off} input vertices on segments left off its subsegments"
+            return v
         v.fail("area-total", "", f"total area: Triangle {t_area!r}, ours {o_area!r}")
 
     if sw.A and "regions" in case.input and finite:
@@ -554,7 +571,15 @@ def near_duplicate_merges(result: dict, rtol: float = 1e-12) -> int:
     if len(xy) < 2 or not np.isfinite(xy).all():
         return 0
     extent = float(np.abs(xy).max())
-    pairs = np.array(sorted(cKDTree(xy).query_pairs(rtol * extent)), dtype=np.int64).reshape(-1, 2)
+    tree = cKDTree(xy)
+    # at mixed scales (1e-303 beside 1e300) the radius swallows whole
+    # clusters: their pairs are no near-duplicates, and listing them took the
+    # campaign to 23 GB (killed); count around a sample first, without listing
+    # (in the max norm: Euclidean squares overflow at 1e300)
+    probe = xy[:: max(1, len(xy) // 256)]
+    if np.mean(tree.query_ball_point(probe, rtol * extent, p=np.inf, return_length=True)) > 4:
+        return 0
+    pairs = np.array(sorted(tree.query_pairs(rtol * extent, p=np.inf)), dtype=np.int64).reshape(-1, 2)
     pairs = pairs[(xy[pairs[:, 0]] != xy[pairs[:, 1]]).any(axis=1)]  # exact duplicates are input duplicates
     if not len(pairs):
         return 0
@@ -562,9 +587,19 @@ def near_duplicate_merges(result: dict, rtol: float = 1e-12) -> int:
     return len(xy) - connected_components(g, directed=False)[0]
 
 
+def crossing_copies(case: Case, t_res: dict) -> int:
+    """Vertices Triangle added at exactly the place of an input vertex."""
+    iv = np.asarray(case.input["vertices"], dtype=np.float64).reshape(-1, 2)
+    tv = _vertices(t_res)
+    if len(tv) <= len(iv):
+        return 0
+    inputs = {tuple(p) for p in iv.tolist()}
+    return sum(tuple(p) in inputs for p in tv[len(iv):].tolist())
+
+
 def vertices_left_off_segments(case: Case, t_res: dict, res: dict) -> int:
-    """Input vertices exactly inside an input segment that end subsegments of
-    ours but none of Triangle's.
+    """Input vertices exactly inside an input segment where a subsegment of
+    ours along that segment ends, and none of Triangle's.
 
     A segment through an input vertex is split there (Triangle does so too
     when nothing else interferes), but when another segment crosses it first,
@@ -576,22 +611,34 @@ def vertices_left_off_segments(case: Case, t_res: dict, res: dict) -> int:
     if not len(segs) or len(iv) * len(segs) > 10**5 or not np.isfinite(iv).all():
         return 0
 
-    def ends(result):
+    def pieces_at(result):
+        """vertex -> directions of the subsegments that end there"""
         xy = _vertices(result)
         s = _arr(result, "segments", 2).astype(np.int64)
-        return {tuple(xy[i].tolist()) for i in s.ravel() if 0 <= i < len(xy)}
+        out = defaultdict(list)
+        for i, j in s.tolist():
+            if 0 <= i < len(xy) and 0 <= j < len(xy):
+                out[tuple(xy[i].tolist())].append(xy[j] - xy[i])
+                out[tuple(xy[j].tolist())].append(xy[i] - xy[j])
+        return out
 
-    theirs, ours = ends(t_res), ends(res)
+    def along(pieces, d):
+        """some piece runs along direction d (within rounding: Triangle's pieces end at rounded crossings)"""
+        return any(abs(d[0] * q[1] - d[1] * q[0]) <= 1e-9 * math.hypot(*d) * math.hypot(*q) for q in pieces)
+
+    theirs, ours = pieces_at(t_res), pieces_at(res)
     k = 0
     for p in {tuple(x) for x in iv.tolist()}:
-        if p in theirs or p not in ours:
+        if p not in ours:
             continue
         for a, b in segs.tolist():
             u, w = iv[a].tolist(), iv[b].tolist()
             between = (p[0] - u[0]) * (w[0] - p[0]) >= 0 and (p[1] - u[1]) * (w[1] - p[1]) >= 0
             if between and tuple(u) != p and tuple(w) != p and orient_exact(u, w, list(p)) == 0:
-                k += 1
-                break
+                d = (w[0] - u[0], w[1] - u[1])
+                if along(ours[p], d) and not along(theirs.get(p, ()), d):
+                    k += 1
+                    break
     return k
 
 
@@ -601,16 +648,30 @@ def _equal_counts(v: Verdict, case: Case, sw: Switches, t_res: dict, res: dict) 
         v.notes["triangle_near_duplicates"] = merges  # counts follow from Triangle's extra vertices
         return
     o2_differs = any(f.kind == "o2" for f in v.failures)  # the midpoint nodes are missing: counted once
+    # Triangle computes a crossing of two segments that lands exactly on an
+    # input vertex (both pass through it) as a new vertex, a copy, and leaves
+    # the input vertex unused; ours uses the input vertex
+    # (regressions/crossing-at-input-vertex.json: 10 vertices against 9)
+    copies = crossing_copies(case, t_res)
+    if copies and n_rows(t_res, "vertices") - copies == n_rows(res, "vertices"):
+        v.notes["triangle_crossing_copies"] = copies
+        o2_differs = True  # (skips the vertex count and the vertex-marker multiset alike)
     left_off = 0
     if n_rows(res, "segments") > n_rows(t_res, "segments"):
         left_off = vertices_left_off_segments(case, t_res, res)
         if left_off:
             v.notes["triangle_left_vertices_off_segments"] = left_off
     for key in ("vertices", "triangles", "segments", "edges", "neighbors"):
-        if key == "vertices" and o2_differs:
-            continue
+        if key == "vertices" and (o2_differs or (left_off and sw.j)):
+            continue  # (under j Triangle jettisons such a vertex when no triangle uses it)
         if key == "segments" and left_off and n_rows(res, key) - n_rows(t_res, key) == left_off:
             continue  # ours splits the segments at those vertices
+        if key in ("triangles", "edges", "neighbors") and left_off:
+            # that vertex is a corner of ours' triangles along the segment, of
+            # none of Triangle's (three segments crossing around (0, 0) on one of
+            # them under pQ: Triangle's crossing triangle is one, ours two;
+            # regressions/crossing-through-vertex-counts.json); the areas agree
+            continue
         if n_rows(t_res, key) != n_rows(res, key):
             v.fail("count", key, f"{key}: Triangle {n_rows(t_res, key)}, ours {n_rows(res, key)}")
     n_in = len(case.input["vertices"])
@@ -629,7 +690,9 @@ def _equal_counts(v: Verdict, case: Case, sw: Switches, t_res: dict, res: dict) 
             v.fail("markers", detail, f"input vertex {i}: Triangle's marker {tm[i]}, ours {om[i]} "
                    f"({len(diff)} input vertices differ)")
     for key in ("vertex_markers", "segment_markers", "edge_markers"):
-        if key == "vertex_markers" and (o2_differs or outside_only):
+        if key == "vertex_markers" and (o2_differs or outside_only or (left_off and sw.j)):
+            continue
+        if key == "edge_markers" and left_off:
             continue
         tm = Counter(_arr(t_res, key, 1).reshape(-1).tolist())
         om = Counter(_arr(res, key, 1).reshape(-1).tolist())

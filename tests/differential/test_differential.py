@@ -18,11 +18,13 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
+import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, seed, settings
 
 from . import known
 from .cases import read_case, write_case
+from .determinism import fixed_constants
 from .families import cases
 from .harness import run_case
 
@@ -37,6 +39,13 @@ _confirmed: dict = {}
 def _out_dir(tmp_path_factory) -> Path:
     env = os.environ.get("RUPPERT_DIFF_OUT")
     return Path(env) if env else tmp_path_factory.getbasetemp() / "differential-failures"
+
+
+@pytest.fixture
+def same_draws():
+    """The generated cases do not depend on what else the session imported."""
+    with fixed_constants():
+        yield
 
 
 def _describe(run, failures) -> str:
@@ -54,7 +63,7 @@ def _describe(run, failures) -> str:
 )
 @seed(SEED)
 @given(case=cases())
-def test_generated_cases_agree_with_triangle(runners, tmp_path_factory, case):
+def test_generated_cases_agree_with_triangle(runners, tmp_path_factory, same_draws, case):
     run = run_case(runners, case, confirmed=_confirmed)
     if run is None:
         return  # Triangle made no mesh to refine
@@ -93,3 +102,30 @@ def test_regressions_name_known_defects():
     for path in REGRESSIONS:
         _, meta = read_case(path)
         assert not meta.get("defect") or meta["defect"] in known.BY_ID, (path.name, meta.get("defect"))
+
+
+def _draw(n: int) -> list[str]:
+    drawn = []
+
+    @settings(max_examples=n, deadline=None, derandomize=True, database=None, suppress_health_check=list(HealthCheck))
+    @given(case=cases())
+    def draw(case):
+        drawn.append(f"{case.switches} {case.describe()} {np.asarray(case.input['vertices']).ravel()[:4].tolist()}")
+
+    with fixed_constants() as fixed:
+        assert fixed, "Hypothesis's local-constant pool could not be fixed (determinism.py)"
+        draw()
+    return drawn
+
+
+def test_draws_ignore_loaded_modules(tmp_path, monkeypatch):
+    """The cases a seed draws do not change when a local module full of
+    numeric constants is imported (as collecting other tests does)."""
+    before = _draw(40)
+    # numbers like those of instrument.study, which collecting tests/study imports
+    (tmp_path / "many_constants.py").write_text(
+        "SCALES = (0.0, 0.5, 1.0, -1.0, 1.7, 1.9, 0.05, 0.1, 0.2, 0.25, 0.475, 0.6, 0.75, 1.5, 1e-300, 1e-09)\n"
+        "SIZES = (100, 110, 130, 300, 400, 1000, 12345, 2654435761, 128, 512, 1024, 65536, 1000000)\n")
+    monkeypatch.syspath_prepend(str(tmp_path))
+    __import__("many_constants")
+    assert _draw(40) == before

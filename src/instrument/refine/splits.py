@@ -66,10 +66,13 @@ from cython.cimports.libc.math import fabs, hypot, sqrt
 PAUSE_EVERY = cython.declare(Index, 1 << 14)
 
 #: A vertex this close to a subsegment's line (relative to the largest
-#: coordinate of the three points) lies on it up to rounding: a few units in
-#: the last place, where split points that were moved onto the line once and
-#: printed with 17 digits land.
+#: coordinate of the three points on each axis) lies on it up to rounding: a
+#: few units in the last place, where split points that were moved onto the
+#: line once and printed with 17 digits land.
 ON_SEGMENT = cython.declare(cython.double, 2.0**-50)
+
+#: half a unit in the last place, relative
+HALF_ULP = cython.declare(cython.double, 2.0**-53)
 
 #: ... and its distance from the line is below this fraction of its distance
 #: from the nearer end (an angle below 2^-30 radians seen from that end).
@@ -79,26 +82,38 @@ ALONG_SEGMENT = cython.declare(cython.double, 2.0**-30)
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
-def _on_subsegment_scaled(
+def _on_segment_points(
     ax: cython.double, ay: cython.double, bx: cython.double, by: cython.double,
-    px: cython.double, py: cython.double, f: cython.double,
+    px: cython.double, py: cython.double,
 ) -> cython.bint:
-    """``_on_subsegment`` of the points a, b, p multiplied by ``f``."""
-    ax *= f
-    ay *= f
-    bx *= f
-    by *= f
-    px *= f
-    py *= f
+    """Does the point p lie on the segment a b up to rounding, between its ends?"""
     ex: cython.double = bx - ax
     ey: cython.double = by - ay
     cx: cython.double = px - ax
     cy: cython.double = py - ay
-    scale: cython.double = max(fabs(ax), fabs(ay), fabs(bx), fabs(by), fabs(px), fabs(py))
+    # Rounding moves a point by units in the last place of each coordinate,
+    # and a move along x shifts it off the line by |ey| / length of that: the
+    # tolerance takes each axis's largest coordinate times the other
+    # component; and a vertex within half a unit in the last place of the
+    # largest coordinate is on it in any case (no split point can be placed
+    # between it and the line). One scale for both axes admitted the midpoint
+    # of a sliver's other long side, 5e-16 below a segment along the x axis
+    # of length 1, whose y coordinates round 1e-31 apart: the split at it
+    # failed (PrecisionError, where Triangle meshes the sliver).
+    xscale: cython.double = max(fabs(ax), fabs(bx), fabs(px))
+    yscale: cython.double = max(fabs(ay), fabs(by), fabs(py))
+    length: cython.double = sqrt(ex * ex + ey * ey)
     cross: cython.double = ex * cy - ey * cx
     dot: cython.double = ex * cx + ey * cy
-    if not (fabs(cross) <= ON_SEGMENT * scale * sqrt(ex * ex + ey * ey) and 0.0 < dot < ex * ex + ey * ey):
+    tol: cython.double = ON_SEGMENT * (xscale * fabs(ey) + yscale * fabs(ex)) + HALF_ULP * max(xscale, yscale) * length
+    if not (fabs(cross) <= tol and 0.0 < dot < ex * ex + ey * ey):
         return False
+    # ... and near the line next to its own distance from the ends: the units
+    # in the last place above are of the largest coordinate, which at mixed
+    # scales (ends at 1e300 and 0, c at 2e-302) admit a vertex at 45 degrees
+    # to the segment; the split at it made a subsegment off the segment that
+    # refinement chased forever.  The distance comes from the exact orient2d
+    # and the lengths from hypot, which neither overflow nor vanish.
     dist: cython.double = fabs(orient2d(ax, ay, bx, by, px, py)) / hypot(ex, ey)
     near: cython.double = min(hypot(cx, cy), hypot(px - bx, py - by))
     return dist <= ALONG_SEGMENT * near
@@ -110,32 +125,16 @@ def _on_subsegment_scaled(
 def _on_subsegment(m: Mesh, a: Index, b: Index, c: Index) -> cython.bint:
     """Does vertex ``c`` lie on the segment ``a b`` up to rounding, between its ends?"""
     xy = m.xy
-    ex: cython.double = xy[b, 0] - xy[a, 0]
-    ey: cython.double = xy[b, 1] - xy[a, 1]
-    cx: cython.double = xy[c, 0] - xy[a, 0]
-    cy: cython.double = xy[c, 1] - xy[a, 1]
-    scale: cython.double = max(fabs(xy[a, 0]), fabs(xy[a, 1]), fabs(xy[b, 0]), fabs(xy[b, 1]), fabs(xy[c, 0]), fabs(xy[c, 1]))
     # squares overflow beyond 2^511 (every vertex lay on every subsegment)
     # and vanish below 2^-537: out of range, the test runs on the points
     # scaled by a power of two (exact upward; downward only bits below
-    # 2^-1000 of the extent go)
-    big: cython.double = max(max(fabs(ex), fabs(ey)), max(fabs(cx), fabs(cy)))
+    # 2^-1000 of the extent go); in range f is 1, which changes nothing
+    big: cython.double = max(max(fabs(xy[b, 0] - xy[a, 0]), fabs(xy[b, 1] - xy[a, 1])),
+                             max(fabs(xy[c, 0] - xy[a, 0]), fabs(xy[c, 1] - xy[a, 1])))
+    f: cython.double = 1.0
     if not (big <= 2.0**240 and big >= 2.0**-240) and big > 0.0:
-        return _on_subsegment_scaled(xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[c, 0], xy[c, 1], unit_scale(big))
-    cross: cython.double = ex * cy - ey * cx
-    dot: cython.double = ex * cx + ey * cy
-    if not (fabs(cross) <= ON_SEGMENT * scale * sqrt(ex * ex + ey * ey) and 0.0 < dot < ex * ex + ey * ey):
-        return False
-    # ... and near the line next to its own distance from the ends: the units
-    # in the last place above are of the largest coordinate, which at mixed
-    # scales (ends at 1e300 and 0, c at 2e-302) admit a vertex at 45 degrees
-    # to the segment (and squares that overflow admit anything); the split
-    # at it made a subsegment off the segment that refinement chased forever.
-    # The distance comes from the exact orient2d and the lengths from hypot,
-    # which neither overflow nor vanish.
-    dist: cython.double = fabs(orient2d(xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[c, 0], xy[c, 1])) / hypot(ex, ey)
-    near: cython.double = min(hypot(cx, cy), hypot(xy[c, 0] - xy[b, 0], xy[c, 1] - xy[b, 1]))
-    return dist <= ALONG_SEGMENT * near
+        f = unit_scale(big)
+    return _on_segment_points(xy[a, 0] * f, xy[a, 1] * f, xy[b, 0] * f, xy[b, 1] * f, xy[c, 0] * f, xy[c, 1] * f)
 
 
 @cython.cfunc
@@ -323,6 +322,30 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
     n: Index
     nb: Index
     n, nb = collect_cavity(r, m, px, py, e // 3, t1, e)
+    # The split point, rounded, may land on or beyond the line of a rim edge:
+    # a hull segment's pieces shrink towards its end C (to ~1e-17 beside
+    # coordinates ~1e-3), encroached by an input vertex D 4e-193 from C, and
+    # the point rounds onto the line C D. The fan would hold a flat or
+    # inverted triangle (Triangle outputs it). That rim edge joins an end to
+    # the apex D, which then lies on the subsegment within the rounding the
+    # split points themselves have: split at D instead (the encroachment
+    # ends), or, for any other rim edge, run out of precision.
+    apex_e: Index = m.corner[e]
+    apex_t: Index = m.corner[tw] if tw != NO_EDGE else -1
+    u: Index
+    w: Index
+    for j in range(nb):
+        u = r.bnd[j, 1]
+        w = r.bnd[j, 2]
+        if orient2d(px, py, xy[u, 0], xy[u, 1], xy[w, 0], xy[w, 1]) <= 0.0:
+            forget_cavity(r, m, n)
+            if u == apex_e or w == apex_e:
+                return _split_at_apex(r, m, segs, e, e, triangles)
+            if apex_t >= 0 and (u == apex_t or w == apex_t):
+                return _split_at_apex(r, m, segs, e, tw, triangles)
+            r.error_org = o
+            r.error_dest = d
+            return PRECISION
     if not has_room(r, m, nb) or segs.count >= segs.marker.shape[0]:
         forget_cavity(r, m, n)
         step_undone(r, m.work)
@@ -333,7 +356,6 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
     v: Index = new_vertex(m, px, py, V_SEGMENT, segs.marker[rec], e0, e1, e0, split, 0.0)
     fill_cavity(r, m, v, n, nb)
     t: Index
-    w: Index
     for j in range(nb):  # the halves: spokes to o and d (edge 2 of (v, o|d, x), edge 1 of (v, x, o|d))
         t = r.fan[j]
         for k in range(1, 3):

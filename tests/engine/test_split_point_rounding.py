@@ -1,0 +1,71 @@
+"""A subsegment split whose rounded point would make a flat triangle (issue 18).
+
+Four points, two of them 4.2e-193 apart at x = 0.00143909...: the free input
+vertex D = (x0, 4.2e-193) lies inside the hull next to its corner C = (x0, 0)
+and encroaches every piece of the hull edge from C that refinement makes, so
+the pieces shrink towards C. Near 5e-17 from C the split point rounds onto the
+vertical line x = x0 through C and D, and the fan of the split held the flat
+triangle (C, D, P): a zero-area triangle in the output (Triangle's own mesh
+of this input has one too). D then lies on the piece within the rounding the
+split points themselves have, and the piece is split at D instead, which
+ends the encroachment. Where no such vertex explains it, refinement runs out
+of precision (a clear error) rather than output a flat triangle.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import instrument
+from instrument.check import check_mesh
+from instrument.refine import PrecisionError
+
+X0 = 0.0014390945434570312
+POINTS = np.array([[0.00027942657470703125, 0.24972057342529297], [1.0, -0.75], [X0, 0.0], [X0, 4.2272262896050957e-193]])
+
+
+@pytest.mark.parametrize("area", ["0.005", "0.05", "0.5"])
+def test_area_refinement_next_to_a_tiny_gap_is_valid(area):
+    out = instrument.triangulate({"vertices": POINTS}, f"a{area}Q")
+    assert check_mesh(out, max_area=float(area)) == []
+    # D is a vertex of the mesh, on the hull chain from C
+    assert any((out["vertices"] == POINTS[3]).all(axis=1))
+
+
+def test_quality_refinement_runs_out_of_precision_clearly():
+    # a bad triangle on the 4e-193 edge C D cannot be split in doubles (nor by Triangle)
+    with pytest.raises(PrecisionError, match="Ran out of precision"):
+        instrument.triangulate({"vertices": POINTS}, "qQ")
+
+
+def test_with_more_points_around():
+    # the campaign's original: 19 collinear-family points, za0.005iQ (Triangle's mesh is valid)
+    pts = np.array([
+        [0.0163116455078125, 0.2336883544921875], [0.013470649719238281, 0.23652935028076172],
+        [0.7917699813842773, -0.5417699813842773], [0.0010213851928710938, 0.2489786148071289],
+        [0.00040912628173828125, 0.24959087371826172], [0.9999990463256836, -0.7499990463256836],
+        [0.0009326934814453125, 0.2490673065185547], [1.0, -0.75], [0.0048618316650390625, 0.24513816833496094],
+        [0.00054931640625, 0.24945068359375], [0.0019598007202148438, 0.24804019927978516],
+        [0.0199737548828125, 0.2300262451171875], [0.00027942657470703125, 0.24972057342529297],
+        [0.012432098388671875, 0.23756790161132812], [0.10851573944091797, 0.14148426055908203],
+        [0.0029420852661132812, 0.24705791473388672], [1.0, -0.75], [X0, 0.0], [X0, 4.2272262896050957e-193],
+    ])
+    for switches in ("za0.005iQ", "a0.005Q"):
+        out = instrument.triangulate({"vertices": pts}, switches)
+        assert check_mesh(out, max_area=0.005) == []
+
+
+@pytest.mark.parametrize(("area", "vertices"), [("0.00000000000000000501", 153), ("0.00000000000000001", 77), ("0.0000000000000001", 11)])
+def test_a_sliver_is_split_along_its_length(area, vertices):
+    """A sliver of length 1 and width 1e-15: the midpoint (0.5, -5e-16) of
+    one long side was taken as lying on the other long side within rounding
+    (a tolerance of units in the last place of the largest coordinate, 1,
+    where the y coordinates round 1e-31 apart), and the split there failed:
+    PrecisionError. Triangle meshes it with 153, 77 and 11 vertices; so does
+    ours now."""
+    sliver = {"vertices": np.array([[0.0, 0.0], [1.0, 2.6226043701171877e-18], [1.0, -1e-15]]),
+              "segments": np.array([[0, 1], [1, 2], [2, 0]])}
+    out = instrument.triangulate(sliver, f"pa{area}Q")
+    assert check_mesh(out, pslg=sliver, max_area=float(area)) == []
+    assert len(out["vertices"]) == vertices
