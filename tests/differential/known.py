@@ -149,16 +149,6 @@ DEFECTS += [
 
 DEFECTS += [
     Defect(
-        "tiny-extent-segments",
-        "crossing and overlapping segments of an input whose whole extent is near 1e-300 (below 2^-400) come out "
-        "as an invalid mesh under p: a horizontal segment at y = 8.7e-303 from x = 1.8e-304, crossed by a nearly "
-        "vertical one, is not a chain of subsegments and two output segments lie on no input segment "
-        "(regressions/tiny-extent-crossing-segments.json); the same input scaled by 2^100 or more is meshed "
-        "correctly (a scaling defect, like recover-tiny-extent, which raises instead)",
-        lambda c, f, n: tiny_extent(c) and f.kind in ("invalid-mesh", "phantom-segment", "boundary-not-segment",
-                                                      "dropped-vertex"),
-    ),
-    Defect(
         "queue-order-size",
         "bad triangles in one of Triangle's 4096 buckets are served first in, first out, and ours queues some "
         "of them in another order (the fan of an insertion from another first edge, or the initial queue in "

@@ -135,3 +135,26 @@ def test_wide_range_signs_are_exact():
     assert orient2d(0.0, 0.0, 1e300, 1e-300, -1e-300, 1e300) == 1.7976931348623157e308
     assert orient2d(0.0, 0.0, 1e-300, 0.0, 1e300, 1e-300) == 5e-324
     assert math.isfinite(incircle(1e-300, 0.0, 0.0, 1e300, -1e300, 0.0, 0.0, -1e-300))
+
+
+CROSSING_NEAR_2_TO_MINUS_1000 = {
+    # a square of side 1.5 * 2^-997 with a segment through its corner (0, 0) crossed
+    # by a horizontal one 1.5 * 2^-1004 above it, near but not at that corner
+    "vertices": [[0.0, 0.0], [1.5 * 2.0**-997, 0.0], [1.5 * 2.0**-997, 1.5 * 2.0**-997], [0.0, 1.5 * 2.0**-997],
+                 [1.5 * 2.0**-1003, 1.5 * 2.0**-998], [-1.5 * 2.0**-1003, -1.5 * 2.0**-998],
+                 [2.0**-1009, 1.5 * 2.0**-1004], [1.5 * 2.0**-997, 1.5 * 2.0**-1004]],
+    "segments": [[1, 2], [2, 3], [3, 0], [4, 5], [6, 7]],
+}
+
+
+@pytest.mark.parametrize("k", [0, 100, 300, 1000])
+def test_a_crossing_near_2_to_minus_1000_is_a_vertex_of_its_own(k):
+    """Segment recovery took a crossing point within an absolute 1e-300 of a
+    vertex to be that vertex: near 1e-300 the horizontal segment was bent
+    through the corner (0, 0) and the mesh was invalid."""
+    inp = {"vertices": np.ldexp(np.array(CROSSING_NEAR_2_TO_MINUS_1000["vertices"]), k),
+           "segments": np.array(CROSSING_NEAR_2_TO_MINUS_1000["segments"])}
+    r = instrument.triangulate(inp, "pQ")
+    assert check_mesh(r, pslg=inp) == []
+    assert len(r["vertices"]) == 9  # the crossing vertex
+    assert sorted(map(sorted, r["segments"].tolist())) == [[0, 3], [0, 8], [2, 3], [2, 7], [4, 8], [6, 8], [7, 8]]

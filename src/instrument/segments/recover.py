@@ -618,7 +618,9 @@ def _split_at_crossing(
     px, py = crossing_point(
         xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[right, 0], xy[right, 1], xy[left, 0], xy[left, 1]
     )
-    tol: cython.double = 2.0**-48 * (fabs(px) + fabs(py)) + 1e-300
+    # relative to the point; the floor is one subnormal unit (an absolute
+    # 1e-300 took every vertex of an input near 1e-300 for the crossing)
+    tol: cython.double = 2.0**-48 * (fabs(px) + fabs(py)) + 2.0**-1074
     if _near(xy, right, px, py, tol):
         return right, False
     if _near(xy, left, px, py, tol):
