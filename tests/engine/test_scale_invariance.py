@@ -158,3 +158,22 @@ def test_a_crossing_near_2_to_minus_1000_is_a_vertex_of_its_own(k):
     assert check_mesh(r, pslg=inp) == []
     assert len(r["vertices"]) == 9  # the crossing vertex
     assert sorted(map(sorted, r["segments"].tolist())) == [[0, 3], [0, 8], [2, 3], [2, 7], [4, 8], [6, 8], [7, 8]]
+
+
+def test_beyond_2_to_512_the_mesh_is_one_mesh_times_the_scale():
+    """Beyond 2^+-512 squared lengths over- or underflow.  Chew's deletion
+    tested the sign of a dot product and point location picked its
+    direction from another: both now scale (core.scaling.scaled_dot), so the
+    mesh of A.poly under pq30 is the same mesh times the scale from 2^520 to
+    2^900 and from 2^-520 to 2^-600 (it was 83 vertices above and 85 or 86
+    below).  In range the queue's buckets see the squared lengths, so the
+    mesh there may differ, as Triangle's does between scales."""
+    A = triangle.get_data("A")
+    meshes = []
+    for k in (520, 700, 900, -520, -600):
+        inp = {**A, "vertices": np.ldexp(A["vertices"], k)}
+        r = instrument.triangulate(inp, "pq30Q")
+        assert check_mesh(r, pslg=inp, min_angle=30) == []
+        meshes.append((np.ldexp(r["vertices"], -k), r["triangles"], r.work))
+    for v, t, w in meshes[1:]:
+        assert np.array_equal(v, meshes[0][0]) and np.array_equal(t, meshes[0][1]) and w == meshes[0][2]

@@ -22,6 +22,7 @@ from __future__ import annotations
 import cython
 from cython.cimports.instrument.core.mesh import GHOST, NO_EDGE, Index, Mesh, is_ghost, lnext, lprev, next_random
 from cython.cimports.instrument.core.predicates import orient2d
+from cython.cimports.instrument.core.scaling import scaled_dot
 from cython.cimports.instrument.counters import C_ORIENT, C_WALK
 
 if not cython.compiled:  # compiled, these are locate.pxd's enum
@@ -226,7 +227,7 @@ def precise_walk(m: Mesh, e: Index, px: cython.double, py: cython.double, max_st
         left = orient2d(xy[o, 0], xy[o, 1], xy[a, 0], xy[a, 1], px, py)
         right = orient2d(xy[a, 0], xy[a, 1], xy[d, 0], xy[d, 1], px, py)
         if left > 0.0 and right > 0.0:
-            go_left = (xy[a, 0] - px) * (xy[d, 0] - xy[o, 0]) + (xy[a, 1] - py) * (xy[d, 1] - xy[o, 1]) > 0.0
+            go_left = scaled_dot(xy[a, 0] - px, xy[a, 1] - py, xy[d, 0] - xy[o, 0], xy[d, 1] - xy[o, 1]) > 0.0
         elif left > 0.0:
             go_left = True
         elif right > 0.0:

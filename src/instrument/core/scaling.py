@@ -39,3 +39,21 @@ def unit_scale(m: cython.double) -> cython.double:
         e = -1000
     return ldexp(1.0, -e) if cython.compiled else math.ldexp(1.0, -e)
 
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def scaled_dot(ux: cython.double, uy: cython.double, vx: cython.double, vy: cython.double) -> cython.double:
+    """``ux vx + uy vy``, or that times a power of two where the products
+    would over- or underflow (components beyond 2^+-500): its sign is right
+    at any scale, its magnitude only in range."""
+    big: cython.double = max(max(abs(ux), abs(uy)), max(abs(vx), abs(vy)))
+    f: cython.double
+    if not (big <= 2.0**500 and big >= 2.0**-500) and big > 0.0:
+        f = unit_scale(big)
+        ux *= f
+        uy *= f
+        vx *= f
+        vy *= f
+    return ux * vx + uy * vy

@@ -15,6 +15,7 @@ import cython
 from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, V_DEAD, V_FREE, Index, Mesh, bond, kill_triangle, lnext, lprev, new_triangle, spare_triangles
 from cython.cimports.instrument.core.navigate import find_edge, remember_corners
 from cython.cimports.instrument.core.predicates import incircle
+from cython.cimports.instrument.core.scaling import scaled_dot
 from cython.cimports.instrument.core.status import DONE, FAILED, NEED_ROOM
 from cython.cimports.instrument.core.subsegments import Subsegments
 from cython.cimports.instrument.counters import C_CREATED, C_DELETED, C_DELETED_VERTEX, C_INCIRCLE
@@ -279,7 +280,7 @@ def chew_delete(r: Refiner, m: Mesh, segs: Subsegments, e: Index) -> cython.bint
             a = m.corner[f]
             if m.vtype[a] != V_FREE:
                 break
-            dot = (xy[o, 0] - xy[a, 0]) * (xy[d, 0] - xy[a, 0]) + (xy[o, 1] - xy[a, 1]) * (xy[d, 1] - xy[a, 1])
+            dot = scaled_dot(xy[o, 0] - xy[a, 0], xy[o, 1] - xy[a, 1], xy[d, 0] - xy[a, 0], xy[d, 1] - xy[a, 1])
             if dot >= 0.0:
                 break
             if queue_used(r) + 64 > r.hkey.shape[0]:
