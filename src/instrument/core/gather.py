@@ -12,16 +12,7 @@ per output here does the same copies in the same order.
 from __future__ import annotations
 
 import cython
-from cython.cimports.instrument.core.mesh import Index, Mesh
-
-
-@cython.cfunc
-@cython.inline
-@cython.nogil
-@cython.exceptval(check=False)
-def _output_triangle(m: Mesh, t: Index) -> cython.bint:
-    """Slot ``t`` holds an output triangle: alive, and no ghost."""
-    return m.stamp[t] > 0 and m.corner[3 * t] >= 0 and m.corner[3 * t + 1] >= 0 and m.corner[3 * t + 2] >= 0
+from cython.cimports.instrument.core.mesh import Index, Mesh, in_output
 
 
 @cython.ccall
@@ -32,7 +23,7 @@ def live_slots(m: Mesh, out: cython.longlong[::1]) -> Index:
     for ``m.nlive``); returns how many."""
     n: Index = 0
     for t in range(m.nslot):
-        if _output_triangle(m, t):
+        if in_output(m, t):
             out[n] = t
             n += 1
     return n

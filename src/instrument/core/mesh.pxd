@@ -73,6 +73,11 @@ cdef inline bint alive(Mesh m, Index t) noexcept nogil:
     return m.stamp[t] > 0
 
 
+cdef inline bint in_output(Mesh m, Index t) noexcept nogil:
+    # alive and no ghost: a triangle the output lists
+    return m.stamp[t] > 0 and m.corner[3 * t] >= 0 and m.corner[3 * t + 1] >= 0 and m.corner[3 * t + 2] >= 0
+
+
 cdef inline void bond(Mesh m, Index e1, Index e2) noexcept nogil:
     if e1 >= 0:
         m.twin[e1] = <int>e2

@@ -389,6 +389,10 @@ if not cython.compiled:
     def alive(m, t):
         return m.stamp[t] > 0
 
+    def in_output(m, t):
+        """Alive and no ghost: a triangle the output lists."""
+        return m.stamp[t] > 0 and m.corner[3 * t] >= 0 and m.corner[3 * t + 1] >= 0 and m.corner[3 * t + 2] >= 0
+
     def bond(m, e1, e2):
         """Make edges ``e1`` and ``e2`` (either may be NO_EDGE) each other's twin."""
         if e1 >= 0:

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import cython
 from cython.cimports.instrument.core.locate import LOC_ON_VERTEX, walk
-from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, Index, Mesh, lnext, lprev
+from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, Index, Mesh, in_output, lnext, lprev
 
 
 @cython.ccall
@@ -123,15 +123,6 @@ def build_vertex_edges(m: Mesh) -> cython.void:
                     m.vtri[v] = 3 * t + (k + 2) % 3
 
 
-@cython.cfunc
-@cython.inline
-@cython.nogil
-@cython.exceptval(check=False)
-def _listed(m: Mesh, t: Index) -> cython.bint:
-    """Triangle ``t`` is in the output: alive, and no ghost."""
-    return m.stamp[t] > 0 and m.corner[3 * t] >= 0 and m.corner[3 * t + 1] >= 0 and m.corner[3 * t + 2] >= 0
-
-
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
@@ -145,14 +136,14 @@ def list_edges(m: Mesh, constrained: cython.bint, out: cython.longlong[::1]) -> 
     e: Index
     tw: Index
     for t in range(m.nslot):
-        if not _listed(m, t):
+        if not in_output(m, t):
             continue
         for j in range(3):
             e = 3 * t + (j + 2) % 3
             if constrained and m.seg[e] < 0:
                 continue
             tw = m.twin[e]
-            if tw < 0 or (tw // 3 > t and _listed(m, tw // 3)):
+            if tw < 0 or (tw // 3 > t and in_output(m, tw // 3)):
                 out[n] = e
                 n += 1
     return n

@@ -613,6 +613,58 @@ def _wabove(am: cython.double, ae: cython.int, bm: cython.double, be: cython.int
 
 
 @cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _wprod(x: cython.double, y: cython.double) -> tuple[cython.double, cython.int]:
+    """x * y of two doubles as a pair."""
+    xm: cython.double
+    xe: cython.int
+    ym: cython.double
+    ye: cython.int
+    xm, xe = _norm(x, 0)
+    ym, ye = _norm(y, 0)
+    return _wmul(xm, xe, ym, ye)
+
+
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _wminor(p: cython.double, q: cython.double, r: cython.double, s: cython.double,
+            ) -> tuple[cython.double, cython.int, cython.double, cython.int]:
+    """p q - r s and its permanent |p q| + |r s|, as pairs."""
+    m1: cython.double
+    e1: cython.int
+    m2: cython.double
+    e2: cython.int
+    m1, e1 = _wprod(p, q)
+    m2, e2 = _wprod(r, s)
+    dm: cython.double
+    de: cython.int
+    pm: cython.double
+    pe: cython.int
+    dm, de = _wadd(m1, e1, -m2, e2)
+    pm, pe = _wadd(fabs(m1), e1, fabs(m2), e2)
+    return dm, de, pm, pe
+
+
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _wsquares(x: cython.double, y: cython.double) -> tuple[cython.double, cython.int]:
+    """x^2 + y^2 as a pair."""
+    m1: cython.double
+    e1: cython.int
+    m2: cython.double
+    e2: cython.int
+    m1, e1 = _wprod(x, x)
+    m2, e2 = _wprod(y, y)
+    return _wadd(m1, e1, m2, e2)
+
+
+@cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
 def _orient2d_wide_at(
@@ -628,26 +680,13 @@ def _orient2d_wide_at(
     bcy: cython.double = by - cy
     if not (fabs(acx) <= _DBL_MAX and fabs(bcx) <= _DBL_MAX and fabs(acy) <= _DBL_MAX and fabs(bcy) <= _DBL_MAX):
         return False, 0.0
-    lm: cython.double
-    le: cython.int
-    rm: cython.double
-    re: cython.int
-    am: cython.double
-    ae: cython.int
-    bm: cython.double
-    be: cython.int
-    am, ae = _norm(acx, 0)
-    bm, be = _norm(bcy, 0)
-    lm, le = _wmul(am, ae, bm, be)
-    am, ae = _norm(acy, 0)
-    bm, be = _norm(bcx, 0)
-    rm, re = _wmul(am, ae, bm, be)
     dm: cython.double
     de: cython.int
-    dm, de = _wadd(lm, le, -rm, re)
     sm: cython.double
     se: cython.int
-    sm, se = _wadd(fabs(lm), le, fabs(rm), re)
+    dm, de, sm, se = _wminor(acx, bcy, acy, bcx)
+    bm: cython.double
+    be: cython.int
     bm, be = _norm(_CCW_WIDE, 0)
     sm, se = _wmul(sm, se, bm, be)
     if not _wabove(dm, de, sm, se):
@@ -676,21 +715,6 @@ def _orient2d_wide(
 
 
 @cython.cfunc
-@cython.inline
-@cython.nogil
-@cython.exceptval(check=False)
-def _wprod(x: cython.double, y: cython.double) -> tuple[cython.double, cython.int]:
-    """x * y of two doubles as a pair."""
-    xm: cython.double
-    xe: cython.int
-    ym: cython.double
-    ye: cython.int
-    xm, xe = _norm(x, 0)
-    ym, ye = _norm(y, 0)
-    return _wmul(xm, xe, ym, ye)
-
-
-@cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
 def _incircle_wide_at(
@@ -714,49 +738,32 @@ def _incircle_wide_at(
         return False, 0.0
     m1: cython.double
     e1: cython.int
-    m2: cython.double
-    e2: cython.int
     # the three minors and their permanents
-    m1, e1 = _wprod(bdx, cdy)
-    m2, e2 = _wprod(cdx, bdy)
     bcm: cython.double
     bce: cython.int
-    bcm, bce = _wadd(m1, e1, -m2, e2)
     bcpm: cython.double
     bcpe: cython.int
-    bcpm, bcpe = _wadd(fabs(m1), e1, fabs(m2), e2)
-    m1, e1 = _wprod(cdx, ady)
-    m2, e2 = _wprod(adx, cdy)
+    bcm, bce, bcpm, bcpe = _wminor(bdx, cdy, cdx, bdy)
     cam: cython.double
     cae: cython.int
-    cam, cae = _wadd(m1, e1, -m2, e2)
     capm: cython.double
     cape: cython.int
-    capm, cape = _wadd(fabs(m1), e1, fabs(m2), e2)
-    m1, e1 = _wprod(adx, bdy)
-    m2, e2 = _wprod(bdx, ady)
+    cam, cae, capm, cape = _wminor(cdx, ady, adx, cdy)
     abm: cython.double
     abe: cython.int
-    abm, abe = _wadd(m1, e1, -m2, e2)
     abpm: cython.double
     abpe: cython.int
-    abpm, abpe = _wadd(fabs(m1), e1, fabs(m2), e2)
+    abm, abe, abpm, abpe = _wminor(adx, bdy, bdx, ady)
     # the lifts
-    m1, e1 = _wprod(adx, adx)
-    m2, e2 = _wprod(ady, ady)
     alm: cython.double
     ale: cython.int
-    alm, ale = _wadd(m1, e1, m2, e2)
-    m1, e1 = _wprod(bdx, bdx)
-    m2, e2 = _wprod(bdy, bdy)
+    alm, ale = _wsquares(adx, ady)
     blm: cython.double
     ble: cython.int
-    blm, ble = _wadd(m1, e1, m2, e2)
-    m1, e1 = _wprod(cdx, cdx)
-    m2, e2 = _wprod(cdy, cdy)
+    blm, ble = _wsquares(bdx, bdy)
     clm: cython.double
     cle: cython.int
-    clm, cle = _wadd(m1, e1, m2, e2)
+    clm, cle = _wsquares(cdx, cdy)
     # det = alift * bc + blift * ca + clift * ab, and its permanent
     dm: cython.double
     de: cython.int

@@ -41,6 +41,18 @@ def unit_scale(m: cython.double) -> cython.double:
 
 
 
+if not cython.compiled:  # compiled, scaling.pxd's inline definition is used
+
+    def scaled_pair(ux, uy, vx, vy, limit):
+        """The vectors u and v, times ``unit_scale`` of their largest component
+        when that lies outside [1/limit, limit] (limit a power of two)."""
+        big = max(abs(ux), abs(uy), abs(vx), abs(vy))
+        if not (big <= limit and big >= 1.0 / limit) and big > 0.0:
+            f = unit_scale(big)
+            return ux * f, uy * f, vx * f, vy * f
+        return ux, uy, vx, vy
+
+
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
@@ -48,12 +60,5 @@ def scaled_dot(ux: cython.double, uy: cython.double, vx: cython.double, vy: cyth
     """``ux vx + uy vy``, or that times a power of two where the products
     would over- or underflow (components beyond 2^+-500): its sign is right
     at any scale, its magnitude only in range."""
-    big: cython.double = max(max(abs(ux), abs(uy)), max(abs(vx), abs(vy)))
-    f: cython.double
-    if not (big <= 2.0**500 and big >= 2.0**-500) and big > 0.0:
-        f = unit_scale(big)
-        ux *= f
-        uy *= f
-        vx *= f
-        vy *= f
+    ux, uy, vx, vy = scaled_pair(ux, uy, vx, vy, 2.0**500)
     return ux * vx + uy * vy

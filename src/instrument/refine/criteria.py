@@ -17,7 +17,7 @@ import cython
 from cython.cimports.instrument.core.mesh import NO_SEG, V_SEGMENT, Index, Mesh, lnext, lprev, next_random
 from cython.cimports.instrument.core.navigate import edge_around, origin_edge
 from cython.cimports.instrument.core.predicates import orient2d
-from cython.cimports.instrument.core.scaling import unit_scale
+from cython.cimports.instrument.core.scaling import scaled_pair, unit_scale
 from cython.cimports.libc.math import fabs
 from cython.cimports.instrument.core.subsegments import Subsegments
 from cython.cimports.instrument.refine.cavity import collect_cavity, forget_cavity, inherited
@@ -171,14 +171,7 @@ def _small_input_angle(m: Mesh, segs: Subsegments, u: Index, v: Index) -> cython
     vy: cython.double = xy[v, 1] - xy[j, 1]
     # squares overflow beyond 2^511 (inf < inf: no exemption) and vanish
     # below 2^-537: out of range, compare the vectors scaled by a power of two
-    big: cython.double = max(max(fabs(ux), fabs(uy)), max(fabs(vx), fabs(vy)))
-    f: cython.double
-    if not (big <= 2.0**240 and big >= 2.0**-240) and big > 0.0:
-        f = unit_scale(big)
-        ux *= f
-        uy *= f
-        vx *= f
-        vy *= f
+    ux, uy, vx, vy = scaled_pair(ux, uy, vx, vy, 2.0**240)
     d1: cython.double = ux * ux + uy * uy
     d2: cython.double = vx * vx + vy * vy
     return 0.999 * d2 < d1 < 1.001 * d2

@@ -17,9 +17,8 @@ from __future__ import annotations
 import cython
 from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, Index, Mesh, lnext, lprev
 from cython.cimports.instrument.core.navigate import find_edge
-from cython.cimports.instrument.core.scaling import unit_scale
+from cython.cimports.instrument.core.scaling import scaled_pair
 from cython.cimports.instrument.refine.state import Refiner
-from cython.cimports.libc.math import fabs
 
 
 @cython.ccall
@@ -81,14 +80,7 @@ def in_lens(r: Refiner, m: Mesh, e0: Index, e1: Index, ax: cython.double, ay: cy
     # a dot product was inf - inf = NaN, taken as encroaching: 3 points under
     # D made 6306 vertices where the same points at 1e150 make 10); there the
     # vectors are scaled by a power of two, which changes no result
-    big: cython.double = max(max(fabs(ux), fabs(uy)), max(fabs(vx), fabs(vy)))
-    f: cython.double
-    if not (big <= 2.0**120 and big >= 2.0**-120) and big > 0.0:
-        f = unit_scale(big)
-        ux *= f
-        uy *= f
-        vx *= f
-        vy *= f
+    ux, uy, vx, vy = scaled_pair(ux, uy, vx, vy, 2.0**120)
     dot: cython.double = ux * vx + uy * vy
     if dot >= 0.0:
         return False

@@ -228,6 +228,20 @@ def _ahead(xy: cython.double[:, ::1], a: Index, b: Index, v: Index) -> cython.bi
 
 
 @cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _next_around(m: Mesh, e: Index, direction: cython.int) -> Index:
+    """The next triangle's edge around the origin of ``e`` (the piece's start):
+    counter-clockwise for direction 0, clockwise for 1; NO_EDGE at the hull."""
+    tw: Index
+    if direction == 0:
+        return m.twin[lprev(e)]
+    tw = m.twin[e]
+    return NO_EDGE if tw == NO_EDGE else lnext(tw)
+
+
+@cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
 def _turn_to_edge(m: Mesh, b: Index, e0: Index, plain: Index) -> tuple[Index, cython.int]:
@@ -248,7 +262,6 @@ def _turn_to_edge(m: Mesh, b: Index, e0: Index, plain: Index) -> tuple[Index, cy
     d: Index
     x: Index
     nxt: Index
-    tw: Index
     for direction in range(2):
         e = e0
         for _ in range(m.stamp.shape[0]):
@@ -262,11 +275,7 @@ def _turn_to_edge(m: Mesh, b: Index, e0: Index, plain: Index) -> tuple[Index, cy
                 return e, 2
             if x >= plain:
                 return -1, -1
-            if direction == 0:
-                nxt = m.twin[lprev(e)]
-            else:
-                tw = m.twin[e]
-                nxt = NO_EDGE if tw == NO_EDGE else lnext(tw)
+            nxt = _next_around(m, e, direction)
             if nxt == NO_EDGE or nxt == e0:
                 break
             e = nxt
@@ -290,7 +299,6 @@ def turn_to(m: Mesh, a: Index, b: Index, e0: Index, plain: Index, sa: Index, sb:
     d: Index
     x: Index
     nxt: Index
-    tw: Index
     od: cython.double
     ox: cython.double
     where: cython.int
@@ -312,11 +320,7 @@ def turn_to(m: Mesh, a: Index, b: Index, e0: Index, plain: Index, sa: Index, sb:
                 return e, 2
             if od > 0.0 and ox < 0.0:
                 return e, 0
-            if direction == 0:
-                nxt = m.twin[lprev(e)]
-            else:
-                tw = m.twin[e]
-                nxt = NO_EDGE if tw == NO_EDGE else lnext(tw)
+            nxt = _next_around(m, e, direction)
             if nxt == NO_EDGE or nxt == e0:
                 break
             e = nxt
