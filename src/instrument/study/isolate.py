@@ -4,7 +4,7 @@ Why a separate process, and why this design (measured on the project's 2-core
 machine with ``dask.distributed`` 2026.8, ``LocalCluster(n_workers=2,
 threads_per_worker=1)``):
 
-* numba kernels and Triangle's C code cannot be interrupted from inside the
+* compiled kernels (ours and Triangle's C code) cannot be interrupted from inside the
   process (signals wait for the kernel to return), and Triangle can segfault
   (a NaN coordinate, a segment at a duplicate vertex): the only reliable cut
   is to kill a process.

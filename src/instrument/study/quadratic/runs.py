@@ -90,14 +90,6 @@ def grid(args) -> sweep.Grid:
     return g
 
 
-def warm_up(strategies: list[str]) -> None:
-    """Compile (or load) the kernels once here: numba caches them on disk for the tasks' processes."""
-    quadratic.replay(20, then="triangle")
-    d = quadratic.example(20)
-    for s in strategies:
-        instrument.triangulate(d, "pq20", strategy=s)
-
-
 def progress_line(row: dict) -> None:
     """One line per finished run, as it finishes."""
     p = row["params"]
@@ -110,7 +102,6 @@ def progress_line(row: dict) -> None:
 def measure(args, path: Path) -> list[dict]:
     """Run the study's grid through the sweep (rows in the dataset ``path``); the study's rows."""
     g = grid(args)
-    warm_up(args.strategies)
     sweep.run(g, path, scheduler=args.scheduler, workers=args.workers, sequential=args.sequential,
               on_row=progress_line)
     by_key = {r["key"]: r for r in dataset.read(path)}
