@@ -727,6 +727,7 @@ def _refining(v: Verdict, case: Case, sw: Switches, pslg, t_res: dict, res: dict
         v.notes["triangle_spread"] = counts
         if counts:
             bound = max(bound, max(counts) * (1 + SPREAD_SLACK[0]) + SPREAD_SLACK[1])
+    v.notes["size_bound"] = bound
     if o_n > bound:
         v.fail("size", "", f"ours uses {o_n} vertices, Triangle {t_n} (bound {bound:.1f}, "
                f"Triangle over re-expressions {v.notes.get('triangle_spread')})")
