@@ -48,11 +48,6 @@ def huge(case: Case) -> bool:
     return bool(v.size and v.max() > 2.0**200)
 
 
-def has_duplicates(case: Case) -> bool:
-    v = np.asarray(case.input["vertices"], dtype=np.float64)
-    return len(np.unique(v, axis=0)) < len(v)
-
-
 def hole_on_segment(case: Case) -> bool:
     """A hole point exactly on an input segment (its endpoints included)."""
     from instrument.check import orient_exact
@@ -89,14 +84,6 @@ DEFECTS = [
         "so the refinement starts from other vertices",
         lambda c, f, n: f.kind == "size" and c.family == "star" and read_switches(c.switches).q,
     ),
-    Defect(
-        "duplicate-copy",
-        "divide and conquer keeps a different copy of a duplicate point than Triangle, whose choice follows its "
-        "randomized quicksort (ours keeps the lowest index), so a hull marker 1 lands on another copy: e.g. "
-        "[[0,0],[1,1],[0,0]] under Q gives Triangle [0, 0, 1], ours [1, 0, 0]",
-        lambda c, f, n: has_duplicates(c) and not read_switches(c.switches).i and f.kind == "markers"
-        and f.detail in ("input-vertex", "vertex_markers", "outside-domain"),
-    ),
 ]
 
 DEFECTS += [
@@ -108,15 +95,6 @@ DEFECTS += [
         "follows Triangle's point location",
         lambda c, f, n: hole_on_segment(c) and read_switches(c.switches).i and f.kind in (
             "count", "area-total", "markers", "size", "region-area", "region-attribute", "attributes"),
-    ),
-]
-
-DEFECTS += [
-    Defect(
-        "markers-outside-domain",
-        "boundary markers of input vertices in no triangle (eaten with the exterior, or every triangle eaten) "
-        "differ from Triangle's (Triangle marks some endpoints of eaten segments 1)",
-        lambda c, f, n: f.kind == "markers" and f.detail == "outside-domain",
     ),
 ]
 
