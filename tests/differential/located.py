@@ -1,0 +1,139 @@
+"""Hole and region points exactly at an input vertex (and, under ``i``, on an
+input segment): the inputs with each such point moved into one of the
+triangles it touches.
+
+Which triangle point location returns for a point at a vertex follows the
+walk, and Triangle's walk starts from triangles it samples at random: the
+same polygon with a hole at one of its vertices eats the polygon or only a
+triangle outside it depending on how many far-away points are appended to
+the input (19 of 40 random star polygons under ``pQ`` changed their answer
+over 0 to 5 appended points; docs/differential.md).  After incremental
+insertion (``i``) the same holds for a point on a segment, and for a point
+on a hull segment or at a hull vertex Triangle's answer can also be that
+the point lies outside (ignored): which of these, moves with the vertex
+numbering and with far-away points.  So Triangle's answer for such a point
+is one of the answers for the point moved into one of the triangles it
+touches (or, under ``i`` on the hull, left out), and which one is not a
+function of the geometry: ours is compared with Triangle's mesh of each
+moved input (``harness.judge_outcomes``) and passes if it agrees with one
+of them in every check.
+
+Ours picks deterministically: the triangle through which its walk (from
+the live triangle in the highest slot, turning by the mesh's seeded random
+stream) first reaches the point (``instrument.carve``).
+"""
+
+from __future__ import annotations
+
+import itertools
+
+import numpy as np
+
+from instrument.check import orient_exact
+
+from .cases import Case
+from .oracles import read_switches
+
+#: at most this many moved inputs per case (the product over the points)
+MAX_ALTERNATIVES = 32
+
+
+def points_to_place(case: Case) -> list[tuple[str, int]]:
+    """(key, row) of every hole or region point exactly at an input vertex,
+    and under ``i`` also exactly on an input segment (``p`` without ``r``:
+    only then are holes and regions located)."""
+    sw = read_switches(case.switches)
+    if not sw.p or sw.r:
+        return []
+    xy = np.asarray(case.input["vertices"], dtype=np.float64).reshape(-1, 2)
+    v = {tuple(p) for p in xy.tolist()}
+    segs = np.asarray(case.input.get("segments", np.zeros((0, 2))), dtype=np.int64).reshape(-1, 2) if sw.i else ()
+    out = []
+    for key in ("holes", "regions"):
+        a = np.asarray(case.input.get(key, np.zeros((0, 2))), dtype=np.float64)
+        for i, p in enumerate(a.reshape(-1, a.shape[-1] if a.ndim == 2 else 2).tolist() if a.size else []):
+            q = (p[0], p[1])
+            if q in v or any(_on_segment(xy, s, q) for s in np.asarray(segs).tolist()):
+                out.append((key, i))
+    return out
+
+
+def _on_segment(xy: np.ndarray, seg, q) -> bool:
+    a, b = seg
+    if not (0 <= a < len(xy) and 0 <= b < len(xy)):
+        return False
+    u, w = xy[a].tolist(), xy[b].tolist()
+    between = min(u[0], w[0]) <= q[0] <= max(u[0], w[0]) and min(u[1], w[1]) <= q[1] <= max(u[1], w[1])
+    return between and orient_exact(u, w, list(q)) == 0
+
+
+def cdt_switches(switches: str) -> str:
+    """Triangle's switches for the constrained Delaunay triangulation the
+    points are located in: ``p`` and ``c`` (given no holes and no regions,
+    nothing is eaten), with the same triangulation method (``i``, ``l``)."""
+    return "pc" + "".join(ch for ch in "il" if ch in switches) + "Q"
+
+
+def _orients(xy: np.ndarray, tri, q) -> list[int]:
+    a, b, c = (xy[k].tolist() for k in tri)
+    return [orient_exact(a, b, q), orient_exact(b, c, q), orient_exact(c, a, q)]
+
+
+def moved_into(xy: np.ndarray, triangles: np.ndarray, p) -> list[list[float]]:
+    """A point strictly inside each triangle whose closed interior holds
+    ``p`` (just off ``p``, towards the triangle's centroid)."""
+    out = []
+    q0 = [float(p[0]), float(p[1])]
+    for t in range(len(triangles)):
+        tri = triangles[t, :3].tolist()
+        if min(_orients(xy, tri, q0)) < 0:
+            continue
+        centre = xy[tri].mean(axis=0)
+        for step in (2.0**-20, 2.0**-10, 2.0**-4):
+            q = (np.asarray(q0) + step * (centre - q0)).tolist()
+            if min(_orients(xy, tri, q)) > 0:
+                out.append(q)
+                break
+    return out
+
+
+def on_hull(xy: np.ndarray, triangles: np.ndarray, p) -> bool:
+    """``p`` lies on a boundary edge of the triangulation (its convex hull)."""
+    t = triangles[:, :3]
+    e = np.concatenate([t[:, [0, 1]], t[:, [1, 2]], t[:, [2, 0]]])
+    key = np.sort(e, axis=1)
+    uniq, count = np.unique(key, axis=0, return_counts=True)
+    return any(_on_segment(xy, s, (float(p[0]), float(p[1]))) for s in uniq[count == 1].tolist())
+
+
+def alternatives(case: Case, cdt: dict) -> list[Case]:
+    """``case`` with its ``points_to_place`` moved, each into one of the
+    triangles it touches in ``cdt`` (Triangle's ``cdt_switches`` mesh of the
+    input), or under ``i`` on the hull also left out, in every combination
+    (at most ``MAX_ALTERNATIVES``)."""
+    at = points_to_place(case)
+    if not at or not len(cdt.get("triangles", ())):
+        return []
+    incremental = read_switches(case.switches).i
+    xy = np.asarray(cdt["vertices"], dtype=np.float64).reshape(-1, 2)
+    triangles = np.asarray(cdt["triangles"], dtype=np.int64).reshape(len(cdt["triangles"]), -1)
+    choices = []
+    for key, i in at:
+        p = np.asarray(case.input[key], dtype=np.float64)[i, :2]
+        moved = moved_into(xy, triangles, p)
+        if incremental and on_hull(xy, triangles, p):
+            moved.append(None)  # outside the mesh: ignored
+        if not moved:
+            return []
+        choices.append(moved)
+    # a point left out is put beyond the input's bounding box, where Triangle
+    # ignores it silently (deleting it would drop the regions' attribute column)
+    lo, hi = xy.min(axis=0), xy.max(axis=0)
+    beyond = (hi + (hi - lo) + 1.0).tolist()
+    out = []
+    for combo in itertools.islice(itertools.product(*choices), MAX_ALTERNATIVES):
+        inp = {k: np.array(v, copy=True) for k, v in case.input.items()}
+        for (key, i), q in zip(at, combo):
+            inp[key][i, :2] = beyond if q is None else q
+        out.append(Case(family=case.family, switches=case.switches, input=inp, meta=dict(case.meta)))
+    return out
