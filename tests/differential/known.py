@@ -42,12 +42,6 @@ def tiny_extent(case: Case) -> bool:
     return bool(v.size and v.max() < 2.0**-400)
 
 
-def huge(case: Case) -> bool:
-    """Some coordinate above 2^200."""
-    v = _coords(case)
-    return bool(v.size and v.max() > 2.0**200)
-
-
 def has_duplicates(case: Case) -> bool:
     v = np.asarray(case.input["vertices"], dtype=np.float64)
     return len(np.unique(v, axis=0)) < len(v)
@@ -166,17 +160,6 @@ DEFECTS += [
         "vertices in 20 s, slower as it goes, so the 20-second deadline is missed (Triangle crashes on most of "
         "them; where it meshes, its quality test overflowed)",
         lambda c, f, n: f.kind == "ours-timeout" and not ordinary_scale(c.input),
-    ),
-]
-
-DEFECTS += [
-    Defect(
-        "huge-sliver-overrefined",
-        "quality refinement of a 0.6-degree sliver at 1e300 ((0, 0), (1e300, 1.5e294), (1e300, -1e298) under "
-        "qpi) makes 27281 vertices where the same input scaled to ~1 makes 89 (refinement is not scale-invariant "
-        "up there), and the exact checker's box join on that mesh lists 662 million candidate pairs "
-        "(MemoryError, 4.9 GiB)",
-        lambda c, f, n: huge(c) and read_switches(c.switches).q and f.kind == "checker-error",
     ),
 ]
 

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from instrument.check import boxes as boxes_module
-from instrument.check.boxes import BoxTree, box_pairs, overlapping
+from instrument.check.boxes import BoxTree, box_pairs, octagons, overlapping
 
 
 def brute(tbox, ebox):
@@ -115,3 +115,36 @@ def test_a_graded_quadrant_is_output_sensitive():
                for i in range(0, len(queries), 500))
     assert len(pairs) == hits
     assert tree.visits < 20 * (len(box) + len(pairs))
+
+
+@pytest.mark.parametrize("scale", [0, 300, 1000, 1023, -1000, -1074])
+def test_octagons_hold_the_exact_sums(scale):
+    """The diagonal ranges of ``octagons`` hold x + y and x - y exactly
+    (Fractions), through overflow and the subnormals."""
+    from fractions import Fraction
+
+    rng = np.random.default_rng(scale & 0xFFFF)
+    with np.errstate(over="ignore"):  # beyond the largest double: clipped to it below
+        pts = np.ldexp(rng.standard_normal((200, 3, 2)), scale + rng.integers(-3, 4, (200, 3, 2)))
+        pts[:20] = np.ldexp(rng.integers(-7, 8, (20, 3, 2)).astype(float), scale)
+    pts[20:40, :, 1] = -pts[20:40, :, 0]  # x + y = 0 exactly
+    pts = np.clip(np.nan_to_num(pts), -np.finfo(float).max, np.finfo(float).max)
+    h = octagons(pts)
+    for row, p in zip(h, pts):
+        for x, y in p:
+            for lo, hi, v in ((row[4], row[5], Fraction(x) + Fraction(y)), (row[6], row[7], Fraction(x) - Fraction(y))):
+                assert (lo == -np.inf or Fraction(lo) <= v) and (hi == np.inf or v <= Fraction(hi))
+
+
+def test_octagons_of_triangles_spanning_a_graded_corner():
+    """Triangles (r, 0), (0, r), (r / 2, 0) at every scale hold the origin in
+    their boxes but not in their octagons: an edge near the origin meets
+    only the few that reach it."""
+    r = np.ldexp(1.0, np.arange(1000, -1000, -1))
+    z = np.zeros_like(r)
+    tri = np.stack([np.column_stack([r, z]), np.column_stack([z, r]), np.column_stack([r / 2, z])], 1)
+    edge = np.array([[[0.0, 0.0], [2.0**-990, 0.0]]])
+    pt, pe = box_pairs(octagons(tri)[:, :4], octagons(edge)[:, :4])
+    assert len(pt) == len(r)
+    pt, pe = box_pairs(octagons(tri), octagons(edge))
+    assert sorted(pt.tolist()) == list(range(len(r) - 11, len(r)))  # r <= 2^-989

@@ -14,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 
 from .exact import orient_xy
-from .boxes import overlapping
+from .boxes import octagons, overlapping
 from .view import Edges, MeshView, Problems
 
 
@@ -136,12 +136,8 @@ def segments_meet_triangles(m: MeshView, pa, pb, owner=None):
     gidx = np.flatnonzero(m.good)
     if not gidx.size or not len(pa):
         return none
-    P = m.P[gidx]
-    tbox = np.stack([P[:, :, 0].min(1), P[:, :, 0].max(1), P[:, :, 1].min(1), P[:, :, 1].max(1)], 1)
-    ebox = np.stack([
-        np.minimum(pa[:, 0], pb[:, 0]), np.maximum(pa[:, 0], pb[:, 0]),
-        np.minimum(pa[:, 1], pb[:, 1]), np.maximum(pa[:, 1], pb[:, 1]),
-    ], 1)
+    tbox = octagons(m.P[gidx])
+    ebox = octagons(np.stack([pa, pb], 1))
     hits_t, hits_e = [none[0]], [none[1]]
     for pt, pe in overlapping(tbox, ebox):  # in chunks: only the hits are kept
         tri = gidx[pt]
