@@ -31,23 +31,6 @@ class Defect:
     matches: Callable[[Case, Failure, dict], bool]
 
 
-def _coords(case: Case) -> np.ndarray:
-    v = np.abs(np.asarray(case.input["vertices"], dtype=np.float64)).ravel()
-    return v[v > 0]
-
-
-def tiny_extent(case: Case) -> bool:
-    """Every coordinate below 2^-400 in magnitude."""
-    v = np.abs(np.asarray(case.input["vertices"], dtype=np.float64))
-    return bool(v.size and v.max() < 2.0**-400)
-
-
-def huge(case: Case) -> bool:
-    """Some coordinate above 2^200."""
-    v = _coords(case)
-    return bool(v.size and v.max() > 2.0**200)
-
-
 DEFECTS = [
     Defect(
         "star-size",
@@ -113,17 +96,6 @@ DEFECTS += [
         "base edge, quadratic in the degree (1797 deletions made 180 million incircle tests in the first 6000 "
         "Steiner points, 57 % of the time in the wide-range incircle, 13 % in the deletion itself)",
         lambda c, f, n: f.kind == "ours-timeout" and not ordinary_scale(c.input),
-    ),
-]
-
-DEFECTS += [
-    Defect(
-        "huge-sliver-overrefined",
-        "quality refinement of a 0.6-degree sliver at 1e300 ((0, 0), (1e300, 1.5e294), (1e300, -1e298) under "
-        "qpi) makes 27281 vertices where the same input scaled to ~1 makes 89 (refinement is not scale-invariant "
-        "up there), and the exact checker's box join on that mesh lists 662 million candidate pairs "
-        "(MemoryError, 4.9 GiB)",
-        lambda c, f, n: huge(c) and read_switches(c.switches).q and f.kind == "checker-error",
     ),
 ]
 

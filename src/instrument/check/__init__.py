@@ -43,8 +43,8 @@ If it returns no problem, the triangles (first three columns of
   contain a point x in the relative interior of a boundary edge, and a
   triangle other than the edge's own would contain x.  The checker therefore
   tests, exactly, every boundary edge (open segment) against every other
-  triangle (closed) whose bounding box meets it (a multi-level grid finds the
-  candidates).  The same test catches hanging vertices (T-junctions).
+  triangle (closed) whose bounding box meets it (a packed tree of bounding
+  boxes finds the candidates).  The same test catches hanging vertices (T-junctions).
 
 Vertices that no triangle uses are allowed (Triangle outputs duplicate and
 eaten input vertices).
@@ -70,8 +70,9 @@ Modules
 -------
 ``exact``      the exact signs (filter, then integers);
 ``view``       the result read into arrays and masks, its directed edges, the
-               list of problems;
-``grid``       candidate pairs of overlapping boxes (multi-level grid);
+               list of problems, equal-key joins;
+``boxes``      candidate pairs of overlapping boxes (a packed bounding-box
+               tree, in chunks);
 ``structure``  triangles, edges and overlap: an embedded simplicial complex;
 ``delaunay``   subsegments are edges; the constrained Delaunay property;
 ``chains``     input segments covered by output subsegments; the output's

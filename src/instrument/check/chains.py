@@ -17,10 +17,10 @@ from collections import defaultdict
 
 import numpy as np
 
+from .boxes import overlapping
 from .exact import dot_sign_scalar, orient_exact, sign2x2
-from .grid import box_pairs, join_keys
 from .structure import segments_meet_triangles
-from .view import MAX_MESSAGES, MeshView, Problems, int_array, segment_keys
+from .view import MAX_MESSAGES, MeshView, Problems, int_array, join_keys, segment_keys
 
 
 #: A vertex counts as lying on a segment if it is exactly on it, or if its
@@ -90,6 +90,49 @@ def _subseg_adjacency(m: MeshView):
     return adj
 
 
+def _positions(u, w, x):
+    """Positions of the points x along the segments u w (rows): the dot
+    product of x - u with w - u brought to [0.5, 1] by a power of two.  Only
+    the order matters (exact ties are broken by ``_exact_ranks``); the
+    difference x - u is not scaled first, so that points 1e-300 from the end
+    of a segment 1e300 long do not all come out at 0, which would tie
+    (hundreds of thousands of them on a mesh graded over 600 decades) and
+    send them all to the exact, Fraction-based tie-break."""
+    kk = -np.frexp(np.maximum(np.abs(np.concatenate([u, w], 1)).max(1), 2.0**-1000))[1][:, None]
+    d = np.ldexp(w, kk) - np.ldexp(u, kk)  # w - u, scaled: no overflow
+    d = np.ldexp(d, -np.frexp(np.maximum(np.abs(d).max(1), 2.0**-1074))[1][:, None])
+    with np.errstate(over="ignore", invalid="ignore"):
+        t = ((x - u) * d).sum(1)
+    bad = ~np.isfinite(t)  # x - u beyond the largest double: scaled as well
+    if bad.any():
+        t[bad] = ((np.ldexp(x[bad], kk[bad]) - np.ldexp(u[bad], kk[bad])) * d[bad]).sum(1)
+    return t
+
+
+def _inner_vertices(U, W, X, pbox, sbox):
+    """(vertex, segment, position) for the vertices X lying on the segments
+    U W strictly between their ends (see ON_SEGMENT_RTOL), found among the
+    pairs whose boxes meet, chunk by chunk; sorted by vertex, then segment."""
+    found_p, found_s, found_t = [np.zeros(0, np.int64)], [np.zeros(0, np.int64)], [np.zeros(0)]
+    for pp, ps in overlapping(pbox, sbox):
+        u, w, x = U[ps], W[ps], X[pp]
+        scale = np.maximum(np.abs(np.concatenate([u, w, x], 1)).max(1), 2.0**-1000)
+        k = -np.frexp(scale)[1][:, None]
+        su, sw, sx = np.ldexp(u, k), np.ldexp(w, k), np.ldexp(x, k)
+        d = sw - su
+        cross = d[:, 0] * (sx[:, 1] - su[:, 1]) - d[:, 1] * (sx[:, 0] - su[:, 0])
+        near = np.abs(cross) <= ON_SEGMENT_RTOL * np.hypot(d[:, 0], d[:, 1])
+        after_u = sign2x2(x[:, 0], u[:, 0], w[:, 0], u[:, 0], u[:, 1], x[:, 1], w[:, 1], u[:, 1]) > 0
+        before_w = sign2x2(w[:, 0], x[:, 0], w[:, 0], u[:, 0], x[:, 1], w[:, 1], w[:, 1], u[:, 1]) > 0
+        sel = near & after_u & before_w
+        found_t.append(_positions(u[sel], w[sel], x[sel]))
+        found_p.append(pp[sel])
+        found_s.append(ps[sel])
+    pp, ps, t = np.concatenate(found_p), np.concatenate(found_s), np.concatenate(found_t)
+    order = np.lexsort((ps, pp))
+    return pp[order], ps[order], t[order]
+
+
 def input_chains(m: MeshView, pslg, probs: Problems) -> list:
     """Every input segment, where it meets the mesh, is a chain of subsegments.
 
@@ -134,26 +177,7 @@ def input_chains(m: MeshView, pslg, probs: Problems) -> list:
     slack = 2.0 * ON_SEGMENT_RTOL * np.abs(np.concatenate([U, W], 1)).max(1)
     sbox = np.stack([np.minimum(U[:, 0], W[:, 0]) - slack, np.maximum(U[:, 0], W[:, 0]) + slack,
                      np.minimum(U[:, 1], W[:, 1]) - slack, np.maximum(U[:, 1], W[:, 1]) + slack], 1)
-    pp, ps = box_pairs(pbox, sbox)
-    if len(pp):
-        u, w, x = U[ps], W[ps], X[pp]
-        scale = np.maximum(np.abs(np.concatenate([u, w, x], 1)).max(1), 2.0**-1000)
-        k = -np.frexp(scale)[1][:, None]
-        su, sw, sx = np.ldexp(u, k), np.ldexp(w, k), np.ldexp(x, k)
-        d = sw - su
-        cross = d[:, 0] * (sx[:, 1] - su[:, 1]) - d[:, 1] * (sx[:, 0] - su[:, 0])
-        near = np.abs(cross) <= ON_SEGMENT_RTOL * np.hypot(d[:, 0], d[:, 1])
-        after_u = sign2x2(x[:, 0], u[:, 0], w[:, 0], u[:, 0], u[:, 1], x[:, 1], w[:, 1], u[:, 1]) > 0
-        before_w = sign2x2(w[:, 0], x[:, 0], w[:, 0], u[:, 0], x[:, 1], w[:, 1], w[:, 1], u[:, 1]) > 0
-        sel = near & after_u & before_w
-        pp, ps = pp[sel], ps[sel]
-        # position along the segment, in a per-segment power-of-two scale
-        kk = -np.frexp(np.maximum(np.abs(np.concatenate([u, w], 1)).max(1), 2.0**-1000))[1]
-        kk = kk[sel][:, None]
-        su = np.ldexp(u[sel], kk)
-        t = ((np.ldexp(x[sel], kk) - su) * (np.ldexp(w[sel], kk) - su)).sum(1)
-    else:
-        t = np.zeros(0)
+    pp, ps, t = _inner_vertices(U, W, X, pbox, sbox)
     # Nodes: endpoints (t = -inf / +inf) and the inner vertices, per segment.
     ns = len(segk)
     uid = np.array([where.get(tuple(p), -1) for p in U.tolist()], dtype=np.int64)

@@ -84,6 +84,19 @@ def _object_ints(cols):
     return [ints[:, k] for k in range(x.shape[1])]
 
 
+#: Rows sent to the integer path at once: over hundreds of decades an exact
+#: coordinate is an integer of thousands of bits, so the 550,000 incircle
+#: tests of a graded mesh held at once took over a gigabyte.
+EXACT_CHUNK = 1 << 15
+
+
+def _exact_rows(need):
+    """The rows (indices) where ``need`` holds, in chunks of EXACT_CHUNK."""
+    bad = np.flatnonzero(need)
+    for i in range(0, bad.size, EXACT_CHUNK):
+        yield bad[i:i + EXACT_CHUNK]
+
+
 def _obj_sign(det):
     return (det > 0).astype(np.int8) - (det < 0).astype(np.int8)
 
@@ -116,8 +129,7 @@ def sign2x2(a, b, c, d, e, f, g, h):
     )
     out = np.zeros(det.shape, dtype=np.int8)
     out[sure] = np.sign(det[sure])
-    bad = np.flatnonzero(~sure)
-    if bad.size:
+    for bad in _exact_rows(~sure):
         A, B, C, D, E, F, G, H = _object_ints([v[bad] for v in (a, b, c, d, e, f, g, h)])
         out[bad] = _obj_sign((A - B) * (C - D) - (E - F) * (G - H))
     return out
@@ -175,8 +187,7 @@ def incircle_xy(ax, ay, bx, by, cx, cy, dx, dy):
     on = ((ax == dx) & (ay == dy)) | ((bx == dx) & (by == dy)) | ((cx == dx) & (cy == dy))
     out[on] = 0
     sure |= on
-    bad = np.flatnonzero(~sure)
-    if bad.size:
+    for bad in _exact_rows(~sure):
         AX, AY, BX, BY, CX, CY, DX, DY = _object_ints(
             [v[bad] for v in (ax, ay, bx, by, cx, cy, dx, dy)]
         )

@@ -14,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 
 from .exact import orient_xy
-from .grid import box_pairs
+from .boxes import octagons, overlapping
 from .view import Edges, MeshView, Problems
 
 
@@ -136,23 +136,24 @@ def segments_meet_triangles(m: MeshView, pa, pb, owner=None):
     gidx = np.flatnonzero(m.good)
     if not gidx.size or not len(pa):
         return none
-    P = m.P[gidx]
-    tbox = np.stack([P[:, :, 0].min(1), P[:, :, 0].max(1), P[:, :, 1].min(1), P[:, :, 1].max(1)], 1)
-    ebox = np.stack([
-        np.minimum(pa[:, 0], pb[:, 0]), np.maximum(pa[:, 0], pb[:, 0]),
-        np.minimum(pa[:, 1], pb[:, 1]), np.maximum(pa[:, 1], pb[:, 1]),
-    ], 1)
-    pt, pe = box_pairs(tbox, ebox)
-    tri = gidx[pt]
-    if owner is not None:
-        keep = tri != owner[pe]
-        tri, pe = tri[keep], pe[keep]
-    if not len(tri):
-        return none
-    hit = _open_segment_meets_triangle(
-        pa[pe], pb[pe], m.V[m.Tc[tri, 0]], m.V[m.Tc[tri, 1]], m.V[m.Tc[tri, 2]]
-    )
-    return tri[hit], pe[hit]
+    tbox = octagons(m.P[gidx])
+    ebox = octagons(np.stack([pa, pb], 1))
+    hits_t, hits_e = [none[0]], [none[1]]
+    for pt, pe in overlapping(tbox, ebox):  # in chunks: only the hits are kept
+        tri = gidx[pt]
+        if owner is not None:
+            keep = tri != owner[pe]
+            tri, pe = tri[keep], pe[keep]
+        if not len(tri):
+            continue
+        hit = _open_segment_meets_triangle(
+            pa[pe], pb[pe], m.V[m.Tc[tri, 0]], m.V[m.Tc[tri, 1]], m.V[m.Tc[tri, 2]]
+        )
+        hits_t.append(tri[hit])
+        hits_e.append(pe[hit])
+    tri, pe = np.concatenate(hits_t), np.concatenate(hits_e)
+    order = np.lexsort((pe, tri))  # chunks come in the tree's order: report by triangle, then segment
+    return tri[order], pe[order]
 
 
 def check_overlap(m: MeshView, e: Edges, probs: Problems):

@@ -6,6 +6,7 @@ masks once (indices in range, distinct corners, finite coordinates, exact
 orientation), so that every check can skip what an earlier one already
 reported instead of failing on it.  ``Problems`` caps the messages per kind
 of problem, so that a badly broken mesh gives a readable report.
+``join_keys`` pairs up rows with equal keys (vertex ids, edge keys).
 """
 
 from __future__ import annotations
@@ -135,3 +136,20 @@ def segment_keys(m: MeshView):
     lo = np.minimum(S[:, 0], S[:, 1])
     hi = np.maximum(S[:, 0], S[:, 1])
     return ok, lo * np.int64(max(m.N, 1)) + hi
+
+
+def join_keys(a_obj, a_key, b_obj, b_key):
+    """Every (a, b) pair with equal keys (any sortable dtype): a sort and
+    two binary searches, so linear in the pairs after the sort."""
+    order = np.argsort(b_key, kind="stable")
+    bk = b_key[order]
+    bo = b_obj[order]
+    lo = np.searchsorted(bk, a_key, "left")
+    hi = np.searchsorted(bk, a_key, "right")
+    cnt = hi - lo
+    tot = int(cnt.sum())
+    if tot == 0:
+        return np.zeros(0, np.int64), np.zeros(0, np.int64)
+    first = np.cumsum(cnt) - cnt
+    pos = np.arange(tot) - np.repeat(first, cnt) + np.repeat(lo, cnt)
+    return np.repeat(a_obj, cnt), bo[pos]
