@@ -6,6 +6,9 @@ persistent worker of ours is confirmed in a fresh process, because a case
 that corrupts the worker's heap can make a later, innocent case crash; when
 the persistent worker crashed but the fresh run is fine, the previous case
 is run fresh too, so the crash is charged to the case that caused it.
+Triangle's answer, when ours fails against it, is confirmed in a fresh
+process as well: on some inputs it reads what its heap held before, and an
+answer a new process does not give (or crashes on) is no reference.
 A signature confirmed ``CONFIRMATIONS`` times in a session is not
 confirmed again (each fresh process costs seconds of kernel loading).
 """
@@ -73,6 +76,17 @@ def judge_outcomes(runners: Runners, case: Case, tri: Outcome, ours: Outcome) ->
     return verdict
 
 
+def same_outcome(a: Outcome, b: Outcome) -> bool:
+    """Whether two runs gave the same status and, when ok, equal arrays."""
+    if a.status != b.status:
+        return False
+    if a.status != "ok":
+        return True
+    ra, rb = a.result, b.result
+    return ra.keys() == rb.keys() and all(np.array_equal(np.asarray(ra[k]), np.asarray(rb[k]), equal_nan=True)
+                                         for k in ra)
+
+
 def run_case(runners: Runners, case: Case, previous: Case | None = None, confirmed: dict | None = None,
              confirmations: int = CONFIRMATIONS) -> Run | None:
     """Run ``case``; None when it cannot be made (Triangle makes no mesh to refine).
@@ -83,6 +97,13 @@ def run_case(runners: Runners, case: Case, previous: Case | None = None, confirm
     tri = runners.run_triangle(case.input, case.switches)
     ours = runners.run_ours(case.input, case.switches)
     verdict = judge_outcomes(runners, case, tri, ours)
+    if not verdict.ok and tri.status == "ok":
+        # Triangle's answer is a reference only if a new process gives it too
+        fresh_tri = runners.run_triangle_fresh(case.input, case.switches)
+        if not same_outcome(tri, fresh_tri):
+            tri = fresh_tri
+            verdict = judge_outcomes(runners, case, tri, ours)
+            verdict.notes["triangle_not_reproducible"] = "the persistent worker's answer differs from a new process's"
     run = Run(case, verdict, tri, ours)
     if verdict.ok:
         return run

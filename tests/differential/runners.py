@@ -203,19 +203,31 @@ class Runners:
         """Ours in a new process: a failure seen in the persistent worker is
         confirmed here, so an earlier case that corrupted the worker's heap
         cannot be blamed on this one."""
-        w = Worker("ours", self.ours_timeout, OURS_STARTUP_TIMEOUT)
-        try:
-            out = w.call(tri, opts)
-            if w.proc is not None:  # a corrupted heap often aborts only at exit
-                w.proc.stdin.close()
-                try:
-                    code = w.proc.wait(timeout=30)
-                except subprocess.TimeoutExpired:
-                    code = None
-                if code != 0 and out.status != "crash":
-                    tail = w._stderr_tail().strip()[-300:]
-                    return Outcome("crash", result=out.result, message=f"exit code {code} after the call returned "
-                                   f"{out.summary()}; stderr: {tail}", seconds=out.seconds)
-            return out
-        finally:
-            w.stop()
+        return _fresh(Worker("ours", self.ours_timeout, OURS_STARTUP_TIMEOUT), tri, opts)
+
+    def run_triangle_fresh(self, tri: dict, opts: str) -> Outcome:
+        """Triangle in a new process: on some inputs (a segment from a
+        duplicate vertex Triangle has dropped) its answer depends on what its
+        process's heap held before, and the same input gives a mesh in the
+        persistent worker and a segmentation fault in a new one."""
+        return _fresh(Worker("triangle", self.triangle.timeout), tri, opts)
+
+
+def _fresh(w: Worker, tri: dict, opts: str) -> Outcome:
+    """One call in the new worker ``w``, then its exit: a call that returned
+    but corrupted the heap (which often aborts only at exit) is a crash."""
+    try:
+        out = w.call(tri, opts)
+        if w.proc is not None:
+            w.proc.stdin.close()
+            try:
+                code = w.proc.wait(timeout=30)
+            except subprocess.TimeoutExpired:
+                code = None
+            if code != 0 and out.status != "crash":
+                tail = w._stderr_tail().strip()[-300:]
+                return Outcome("crash", result=out.result, message=f"exit code {code} after the call returned "
+                               f"{out.summary()}; stderr: {tail}", seconds=out.seconds)
+        return out
+    finally:
+        w.stop()
