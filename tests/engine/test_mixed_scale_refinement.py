@@ -112,3 +112,29 @@ def test_a_mesh_graded_over_600_decades_is_valid(switches, angle):
     assert "error" not in out, out
     assert out["problems"] == [], out
     assert out["vertices"] > 4000
+
+
+# a campaign case (seed 2611): inside a square of side 1e30, a segment x = 2.2e-278 from
+# y = 2.2e-278 to 5.6e25, beside the side x = 0; the strip between them is 2.2e-278 wide
+STRIP_CASE = {
+    "vertices": [
+        "0x0.0p+0", "0x0.0p+0", "0x1.94p+99", "0x0.0p+0", "0x1.94p+99", "0x1.94p+99", "0x0.0p+0", "0x1.94p+99",
+        "0x1.94p-923", "0x1.94p-923", "0x1.94p-923", "0x1.74p+85",
+    ],
+    "segments": [0, 1, 1, 2, 2, 3, 3, 0, 4, 5],
+    "regions": [],
+}
+
+
+@pytest.mark.parametrize("budget", [500, 3000, 20000])
+def test_a_segment_beside_a_side_stays_straight(budget):
+    """Vertices of the side x = 0 counted as lying on the segment x = 2.2e-278
+    up to rounding (half an ulp of y = 5.6e25, 6e9, taken for x as well):
+    the splits at them bent the segment across the side and the strip between
+    the two was lost (boundary segments of marker 0).  The strip needs on the
+    order of 1e303 vertices (Triangle runs out of memory); ours refines it
+    with valid meshes until the budget, and without one stops at the vertex
+    limit with a SizeLimitError."""
+    out = _run(STRIP_CASE, f"pqQS{budget}", 0.0)  # cut short: no angle bound
+    assert "error" not in out, out
+    assert out["problems"] == [], out

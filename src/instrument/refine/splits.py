@@ -26,7 +26,7 @@ import cython
 from cython.cimports.instrument.core.insert import flip
 from cython.cimports.instrument.core.locate import LOC_BLOCKED, LOC_FAILED, LOC_INSIDE, LOC_ON_EDGE, LOC_ON_VERTEX, line_walk, precise_walk
 from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, V_FREE, V_SEGMENT, Index, Mesh, is_ghost, kill_triangle, lnext, lprev
-from cython.cimports.instrument.core.navigate import find_edge, remember_corners
+from cython.cimports.instrument.core.navigate import edge_around, find_edge, remember_corners, vertex_edge
 from cython.cimports.instrument.core.predicates import orient2d
 from cython.cimports.instrument.core.scaling import unit_scale
 from cython.cimports.instrument.core.status import DONE, NEED_ROOM, PAUSE, PRECISION
@@ -84,9 +84,10 @@ ALONG_SEGMENT = cython.declare(cython.double, 2.0**-30)
 @cython.exceptval(check=False)
 def _on_segment_points(
     ax: cython.double, ay: cython.double, bx: cython.double, by: cython.double,
-    px: cython.double, py: cython.double,
+    px: cython.double, py: cython.double, slack: cython.double,
 ) -> cython.bint:
-    """Does the point p lie on the segment a b up to rounding, between its ends?"""
+    """Does the point p lie on the segment a b up to rounding, between its
+    ends?  ``slack``: HALF_ULP, or 0 where p is on another segment (below)."""
     ex: cython.double = bx - ax
     ey: cython.double = by - ay
     cx: cython.double = px - ax
@@ -105,7 +106,7 @@ def _on_segment_points(
     length: cython.double = sqrt(ex * ex + ey * ey)
     cross: cython.double = ex * cy - ey * cx
     dot: cython.double = ex * cx + ey * cy
-    tol: cython.double = ON_SEGMENT * (xscale * fabs(ey) + yscale * fabs(ex)) + HALF_ULP * max(xscale, yscale) * length
+    tol: cython.double = ON_SEGMENT * (xscale * fabs(ey) + yscale * fabs(ex)) + slack * max(xscale, yscale) * length
     if not (fabs(cross) <= tol and 0.0 < dot < ex * ex + ey * ey):
         return False
     # ... and near the line next to its own distance from the ends: the units
@@ -134,7 +135,21 @@ def _on_subsegment(m: Mesh, a: Index, b: Index, c: Index) -> cython.bint:
     f: cython.double = 1.0
     if not (big <= 2.0**240 and big >= 2.0**-240) and big > 0.0:
         f = unit_scale(big)
-    return _on_segment_points(xy[a, 0] * f, xy[a, 1] * f, xy[b, 0] * f, xy[b, 1] * f, xy[c, 0] * f, xy[c, 1] * f)
+    if not _on_segment_points(xy[a, 0] * f, xy[a, 1] * f, xy[b, 0] * f, xy[b, 1] * f, xy[c, 0] * f, xy[c, 1] * f,
+                              HALF_ULP):
+        return False
+    # Half an ulp of the largest coordinate is far more than rounding on the
+    # other axis at mixed scales: beside a segment x = 2.2e-278 running up to
+    # y = 5.6e25 it is 6e9 in x, and every vertex of the domain's side x = 0
+    # lay "on" the segment; the splits at them bent it onto that side and
+    # the strip between the two was lost from the mesh.  A vertex on another
+    # segment must not be joined to this one by less than rounding on each
+    # axis; a free vertex may (a vertex 4.9e-11 beside a hull edge at
+    # y = 1e180, where the next double along the edge is 1e164 away).
+    e0: Index = vertex_edge(m, c)
+    if e0 < 0 or edge_around(m, e0, -1) < 0:
+        return True
+    return _on_segment_points(xy[a, 0] * f, xy[a, 1] * f, xy[b, 0] * f, xy[b, 1] * f, xy[c, 0] * f, xy[c, 1] * f, 0.0)
 
 
 @cython.cfunc
