@@ -99,19 +99,6 @@ DEFECTS += [
     ),
 ]
 
-DEFECTS += [
-    Defect(
-        "mixed-scale-Y-invalid",
-        "quality refinement without splitting hull segments (Y) of points spanning 1e-306 to 1e299 makes an "
-        "invalid mesh: (0, 2.5e299), (9.5e293, 0), (0, 0), (0, 9.5e-307) under qYQ give 10799 vertices with "
-        "clockwise triangles and coincident vertices (25 checker problems; under qQ the mesh is valid); found "
-        "by the generated test, seed 26 (regressions/mixed-scale-Y-invalid.json); the refinement kernels were "
-        "left to their own helper",
-        lambda c, f, n: f.kind == "invalid-mesh" and read_switches(c.switches).q and read_switches(c.switches).Y > 0
-        and not ordinary_scale(c.input),
-    ),
-]
-
 BY_ID = {d.id: d for d in DEFECTS}
 
 

@@ -13,7 +13,7 @@ is pooled and split instead.
 then (so that Python can see Ctrl-C and report progress), ``PRECISION``
 when a subsegment is too short to split, and ``DONE``.
 
-(About 670 lines: the two kinds of split and the loop that orders them share
+(About 760 lines: the two kinds of split and the loop that orders them share
 the room checks and the undo of an interrupted step; the pieces each split
 uses live in cavity, criteria, encroach, deletion and queues.)
 """
@@ -475,6 +475,18 @@ def _start_edge(m: Mesh, h: Index, px: cython.double, py: cython.double) -> tupl
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
+def _right_of(m: Mesh, e: Index, px: cython.double, py: cython.double) -> cython.bint:
+    """Is the point (px, py) strictly right of edge ``e`` (exact)?  A check
+    Triangle does not make, so not counted among the orientation tests."""
+    xy = m.xy
+    o: Index = m.corner[lnext(e)]
+    d: Index = m.corner[lprev(e)]
+    return orient2d(xy[o, 0], xy[o, 1], xy[d, 0], xy[d, 1], px, py) < 0.0
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
 def _collapsed(m: Mesh, h: Index, px: cython.double, py: cython.double) -> Index:
     """The shortest edge of handle ``h``'s triangle if the point (px, py)
     is not strictly on the triangle's side of it, else -1.
@@ -520,7 +532,10 @@ def _collapsed(m: Mesh, h: Index, px: cython.double, py: cython.double) -> Index
 def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cython.int:
     """Insert the off-center or circumcenter of handle ``h``'s triangle
     unless it is across a subsegment or encroaches one (then the subsegment
-    is pooled).  Returns DONE or NEED_ROOM (nothing changed)."""
+    is pooled).  A point that cannot be placed strictly inside its cavity
+    (on a vertex, or rounded onto or across an edge) leaves the triangle
+    unsplit.  Returns DONE, NEED_ROOM (nothing changed) or PRECISION (the
+    point rounded onto the triangle's shortest edge: see _collapsed)."""
     step_begins(r, m.work)
     xy = m.xy
     t: Index = h // 3
@@ -550,10 +565,15 @@ def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cyth
     start: Index = lprev(h) if eta < xi else h
     status = LOC_FAILED
     e = -1
-    if not (fabs(xi) <= 1.7976931348623157e308 and fabs(eta) <= 1.7976931348623157e308):
-        # NaN parameters (a needle spanning 1e-304 .. 1e300): the walk needs
-        # the point left of its first edge, and an off-center can lie across
-        # any edge of its triangle, even a subsegment (outside the domain)
+    if not (fabs(xi) <= 1.7976931348623157e308 and fabs(eta) <= 1.7976931348623157e308) or _right_of(m, start, px, py):
+        # NaN parameters (a needle spanning 1e-304 .. 1e300), or finite ones
+        # that rounding has made meaningless (1e17 for a triangle with sides
+        # from 1e-306 to 1e-304, which picked an edge the off-center lay
+        # across): the walk needs the point left of its first edge (else it
+        # finds it "inside" the triangle it lies outside of, and the new
+        # vertex's fan folds over that edge), and an off-center can lie
+        # across any edge of its triangle, even a subsegment (outside the
+        # domain)
         start, status, e = _start_edge(m, h, px, py)
     if status != LOC_BLOCKED:
         status, e = precise_walk(m, start, px, py, m.stamp.shape[0] + 64)
@@ -610,6 +630,22 @@ def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cyth
         m.work[C_UNDONE] += nb
         trace_row(r, T_REJECTED, 0, 0, steps, r.hsize)
         return DONE
+    # The fan must be counter-clockwise: the point strictly left of every rim
+    # edge (exact).  With the start edge checked above the walk's answer is
+    # exact, and the cavity of a constrained Delaunay mesh is star-shaped
+    # from a point inside it, so this holds unless the point lies on the
+    # start edge's own line (the walk then calls it inside the triangle) or
+    # the mesh is not exactly constrained Delaunay (_split_at_apex flips with
+    # orientation tests only).  Should either put the point on or across a
+    # rim edge, or on a rim vertex, the triangle stays unsplit (a Steiner
+    # point that could not be placed, counted with those that fell on a
+    # vertex) and refinement goes on with a valid mesh.  Triangle makes no
+    # such test: these orientations are not counted.
+    for j in range(nb):
+        if orient2d(px, py, xy[r.bnd[j, 1], 0], xy[r.bnd[j, 1], 1], xy[r.bnd[j, 2], 0], xy[r.bnd[j, 2], 1]) <= 0.0:
+            forget_cavity(r, m, n)
+            m.work[C_DUPLICATE] += 1
+            return DONE
     # attributes: barycentric in (org, dest, apex)
     v: Index = new_vertex(m, px, py, V_FREE, 0, b, c, a, xi, eta)
     fill_cavity(r, m, v, n, nb)
