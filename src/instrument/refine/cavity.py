@@ -193,11 +193,14 @@ def order_rim(r: Refiner, m: Mesh, nb: Index, first: Index) -> cython.void:
         j = m.vslot[want]
         if j < 0:
             break
-        if j != pos:
-            for c in range(r.bnd.shape[1]):
-                r.bnd[j, c], r.bnd[pos, c] = r.bnd[pos, c], r.bnd[j, c]
-            for c in range(r.bval.shape[1]):
-                r.bval[j, c], r.bval[pos, c] = r.bval[pos, c], r.bval[j, c]
+        if j != pos:  # (the rows' five and two fields, written out)
+            r.bnd[j, 0], r.bnd[pos, 0] = r.bnd[pos, 0], r.bnd[j, 0]
+            r.bnd[j, 1], r.bnd[pos, 1] = r.bnd[pos, 1], r.bnd[j, 1]
+            r.bnd[j, 2], r.bnd[pos, 2] = r.bnd[pos, 2], r.bnd[j, 2]
+            r.bnd[j, 3], r.bnd[pos, 3] = r.bnd[pos, 3], r.bnd[j, 3]
+            r.bnd[j, 4], r.bnd[pos, 4] = r.bnd[pos, 4], r.bnd[j, 4]
+            r.bval[j, 0], r.bval[pos, 0] = r.bval[pos, 0], r.bval[j, 0]
+            r.bval[j, 1], r.bval[pos, 1] = r.bval[pos, 1], r.bval[j, 1]
             m.vslot[r.bnd[j, 1]] = j
             m.vslot[r.bnd[pos, 1]] = pos
         want = r.bnd[pos, 2]
