@@ -44,17 +44,6 @@ from cython.cimports.instrument.refine.queues import queue_used
 from cython.cimports.instrument.refine.state import Refiner
 
 
-@cython.ccall
-@cython.nogil
-@cython.exceptval(check=False)
-def inherited(m: Mesh, t: Index) -> tuple[cython.double, cython.double]:
-    """Triangle slot ``t``'s area bound and regional attribute, which a new
-    triangle inherits: (-1, 0) when the run has none (the tables have no rows)."""
-    area: cython.double = m.area_bound[t] if m.area_bound.shape[0] else -1.0
-    attr: cython.double = m.attribute[t] if m.attribute.shape[0] else 0.0
-    return area, attr
-
-
 @cython.cfunc
 @cython.inline
 @cython.nogil
@@ -64,17 +53,6 @@ def _flip_bound(a: cython.double, b: cython.double) -> cython.double:
     get from bounds ``a`` and ``b``: their mean, or none (-1) if either has
     none (found by experiment: see reconstruct/__init__.py)."""
     return 0.5 * (a + b) if a > 0.0 and b > 0.0 else -1.0
-
-
-@cython.ccall
-@cython.nogil
-@cython.exceptval(check=False)
-def inherit(m: Mesh, t: Index, area: cython.double, attr: cython.double) -> cython.void:
-    """Give triangle slot ``t`` an area bound and a regional attribute (if the run has them)."""
-    if m.area_bound.shape[0]:
-        m.area_bound[t] = area
-    if m.attribute.shape[0]:
-        m.attribute[t] = attr
 
 
 @cython.ccall
@@ -281,11 +259,26 @@ def new_vertex(
     return v
 
 
-@cython.ccall
-@cython.nogil
-@cython.exceptval(check=False)
-def mark_both(m: Mesh, e: Index, rec: Index) -> cython.void:
-    """Make edge ``e`` (both sides) part of subsegment record ``rec``."""
-    m.seg[e] = cython.cast(cython.int, rec)
-    if m.twin[e] != NO_EDGE:
-        m.seg[m.twin[e]] = cython.cast(cython.int, rec)
+# The small helpers every split and deletion calls: compiled, cavity.pxd's
+# inline definitions; the same functions for the pure-Python mode.
+if not cython.compiled:
+
+    def inherited(m: Mesh, t: Index) -> tuple[float, float]:
+        """Triangle slot ``t``'s area bound and regional attribute, which a new
+        triangle inherits: (-1, 0) when the run has none (the tables have no rows)."""
+        area = m.area_bound[t] if m.area_bound.shape[0] else -1.0
+        attr = m.attribute[t] if m.attribute.shape[0] else 0.0
+        return area, attr
+
+    def inherit(m: Mesh, t: Index, area: float, attr: float) -> None:
+        """Give triangle slot ``t`` an area bound and a regional attribute (if the run has them)."""
+        if m.area_bound.shape[0]:
+            m.area_bound[t] = area
+        if m.attribute.shape[0]:
+            m.attribute[t] = attr
+
+    def mark_both(m: Mesh, e: Index, rec: Index) -> None:
+        """Make edge ``e`` (both sides) part of subsegment record ``rec``."""
+        m.seg[e] = rec
+        if m.twin[e] != NO_EDGE:
+            m.seg[m.twin[e]] = rec

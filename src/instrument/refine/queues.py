@@ -39,15 +39,6 @@ def _bucketed(r: Refiner) -> cython.bint:
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
-def queue_used(r: Refiner) -> Index:
-    """Queue entries in use: the heap's size, or the bucket log's length
-    (served and stale entries included, until a compaction)."""
-    return r.log_length if _bucketed(r) else r.hsize
-
-
-@cython.ccall
-@cython.nogil
-@cython.exceptval(check=False)
 def queue_clear(r: Refiner) -> cython.void:
     """Empty the queue."""
     r.hsize = 0
@@ -210,3 +201,11 @@ def queue_compact(r: Refiner, m: Mesh) -> cython.void:
     r.hsize = n
     for i in range(n // 2 - 1, -1, -1):
         _sift_down(r, i, n)
+
+
+if not cython.compiled:  # compiled, queues.pxd's inline definition (every step's room check calls it)
+
+    def queue_used(r: Refiner) -> Index:
+        """Queue entries in use: the heap's size, or the bucket log's length
+        (served and stale entries included, until a compaction)."""
+        return r.log_length if _bucketed(r) else r.hsize

@@ -66,7 +66,37 @@ cdef class Refiner:
     cdef public long long[:, ::1] trace  # rows: kind, created, deleted, walk steps, queue length
     cdef public Index ntrace
 
-cpdef void step_begins(Refiner r, long long[::1] work) noexcept nogil
-cpdef void step_undone(Refiner r, long long[::1] work) noexcept nogil
-cpdef bint trace_full(Refiner r) noexcept nogil
-cpdef void trace_row(Refiner r, long long kind, long long created, long long deleted, long long steps, long long queue) noexcept nogil
+# Defined here so that the kernels inline them (every step calls them);
+# state.py repeats them for the pure-Python mode.
+
+cpdef inline void step_begins(Refiner r, long long[::1] work) noexcept nogil:
+    # remember the work counters as a step (a split) begins
+    cdef Index i
+    for i in range(work.shape[0]):
+        r.work_begun[i] = work[i]
+
+
+cpdef inline void step_undone(Refiner r, long long[::1] work) noexcept nogil:
+    # a step that returns NEED_ROOM changed nothing and runs again once the
+    # arrays have grown: its tests go back out of the counters
+    cdef Index i
+    for i in range(work.shape[0]):
+        work[i] = r.work_begun[i]
+
+
+cpdef inline bint trace_full(Refiner r) noexcept nogil:
+    # the trace (if on) lacks room for the rows one more step may write
+    return r.trace.shape[0] > 0 and r.ntrace + 64 > r.trace.shape[0]
+
+
+cpdef inline void trace_row(Refiner r, long long kind, long long created, long long deleted, long long steps,
+                            long long queue) noexcept nogil:
+    # append a trace row (if the trace is on)
+    cdef Index i = r.ntrace
+    if i < r.trace.shape[0]:
+        r.trace[i, 0] = kind
+        r.trace[i, 1] = created
+        r.trace[i, 2] = deleted
+        r.trace[i, 3] = steps
+        r.trace[i, 4] = queue
+        r.ntrace = i + 1

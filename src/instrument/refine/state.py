@@ -104,47 +104,33 @@ class Refiner:
         return self.hkey.shape[0]
 
 
-@cython.ccall
-@cython.nogil
-@cython.exceptval(check=False)
-def step_begins(r: Refiner, work: cython.longlong[::1]) -> cython.void:
-    """Remember the work counters as a step (a split) begins."""
-    for i in range(work.shape[0]):
-        r.work_begun[i] = work[i]
+# The step and trace helpers: compiled, state.pxd's inline definitions (the
+# splits call them on every step); the same functions for the pure-Python mode.
+if not cython.compiled:
 
+    def step_begins(r: Refiner, work) -> None:
+        """Remember the work counters as a step (a split) begins."""
+        for i in range(work.shape[0]):
+            r.work_begun[i] = work[i]
 
-@cython.ccall
-@cython.nogil
-@cython.exceptval(check=False)
-def step_undone(r: Refiner, work: cython.longlong[::1]) -> cython.void:
-    """A step that returns NEED_ROOM changed nothing and runs again once the
-    arrays have grown: put its tests back out of the counters, so that the
-    counts do not depend on how much room the arrays started with."""
-    for i in range(work.shape[0]):
-        work[i] = r.work_begun[i]
+    def step_undone(r: Refiner, work) -> None:
+        """A step that returns NEED_ROOM changed nothing and runs again once the
+        arrays have grown: put its tests back out of the counters, so that the
+        counts do not depend on how much room the arrays started with."""
+        for i in range(work.shape[0]):
+            work[i] = r.work_begun[i]
 
+    def trace_full(r: Refiner) -> bool:
+        """The trace (if on) lacks room for the rows one more step may write."""
+        return r.trace.shape[0] > 0 and r.ntrace + 64 > r.trace.shape[0]
 
-@cython.ccall
-@cython.nogil
-@cython.exceptval(check=False)
-def trace_full(r: Refiner) -> cython.bint:
-    """The trace (if on) lacks room for the rows one more step may write."""
-    return r.trace.shape[0] > 0 and r.ntrace + 64 > r.trace.shape[0]
-
-
-@cython.ccall
-@cython.nogil
-@cython.exceptval(check=False)
-def trace_row(
-    r: Refiner, kind: cython.longlong, created: cython.longlong, deleted: cython.longlong,
-    steps: cython.longlong, queue: cython.longlong,
-) -> cython.void:
-    """Append a trace row (if the trace is on)."""
-    i: Index = r.ntrace
-    if i < r.trace.shape[0]:
-        r.trace[i, 0] = kind
-        r.trace[i, 1] = created
-        r.trace[i, 2] = deleted
-        r.trace[i, 3] = steps
-        r.trace[i, 4] = queue
-        r.ntrace = i + 1
+    def trace_row(r: Refiner, kind: int, created: int, deleted: int, steps: int, queue: int) -> None:
+        """Append a trace row (if the trace is on)."""
+        i = r.ntrace
+        if i < r.trace.shape[0]:
+            r.trace[i, 0] = kind
+            r.trace[i, 1] = created
+            r.trace[i, 2] = deleted
+            r.trace[i, 3] = steps
+            r.trace[i, 4] = queue
+            r.ntrace = i + 1
