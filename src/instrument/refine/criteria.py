@@ -76,6 +76,7 @@ def _shape_scaled(
 
 
 @cython.cfunc
+@cython.inline
 @cython.nogil
 @cython.exceptval(check=False)
 def _shape(m: Mesh, a: Index, b: Index, c: Index, circ: cython.bint) -> tuple[cython.double, cython.double, cython.double, cython.double, Index, Index]:
@@ -340,6 +341,7 @@ def _would_create(r: Refiner, m: Mesh, t: Index) -> Index:
 
 
 @cython.cfunc
+@cython.inline
 @cython.nogil
 @cython.exceptval(check=False)
 def _queue(r: Refiner, m: Mesh, t: Index, mn: cython.double, cos2: cython.double, circ2: cython.double) -> cython.void:
