@@ -103,11 +103,14 @@ def test_order_rim_starts_at_the_given_vertex_and_goes_counter_clockwise():
     m.add_area_bounds(np.arange(1.0, m.nslot + 1.0))  # a distinct bound per slot, to follow the rows
     r = refiner()
     n, nb = collect_cavity(r, m, *P, slot_of(m, {0, 1, 4}), -1, -1)
-    value = {edge: tuple(np.asarray(r.bval)[j]) for j, edge in enumerate(_rim(r, nb))}
+    rows = _rim(r, nb)
+    value = {edge: tuple(np.asarray(r.bval)[j]) for j, edge in enumerate(rows)}
     for first, expected in ((2, [(2, 4), (4, 0), (0, 1), (1, 2)]), (0, [(0, 1), (1, 2), (2, 4), (4, 0)])):
         order_rim(r, m, nb, first)
-        assert _rim(r, nb) == expected
-        assert [tuple(np.asarray(r.bval)[j]) for j in range(nb)] == [value[e] for e in expected]  # rows move whole
+        order = [int(k) for k in np.asarray(r.fan)[:nb]]  # the rows, listed in order
+        assert [rows[k] for k in order] == expected
+        assert _rim(r, nb) == rows  # the rows themselves stay where they are, values and all
+        assert [tuple(np.asarray(r.bval)[k]) for k in order] == [value[e] for e in expected]
         assert (np.asarray(m.vslot) == -1).all()  # its scratch is clear again
     forget_cavity(r, m, n)
 
@@ -174,7 +177,8 @@ def test_a_point_on_an_edge_takes_both_sides_and_the_edge_goes():
     assert (n, nb) == (2, 4)
     assert m.work[C_INCIRCLE] - tests == 2  # top and left, both outside
     order_rim(r, m, nb, 0)
-    assert _rim(r, nb) == [(0, 1), (1, 2), (2, 4), (4, 0)]
+    rows = _rim(r, nb)
+    assert [rows[k] for k in np.asarray(r.fan)[:nb]] == [(0, 1), (1, 2), (2, 4), (4, 0)]  # listed in order
     fill_cavity(r, m, p, n, nb)
     assert corner_sets(m) == {frozenset(s) for s in ({5, 0, 1}, {5, 1, 2}, {5, 2, 4}, {5, 4, 0}, {2, 3, 4}, {3, 0, 4})}
     assert find_edge(m, 1, 4) < 0

@@ -6,7 +6,7 @@ without crossing a subsegment whose circumcircle strictly contains the
 point.  Its incircle tests are exactly the ones Lawson's flips would make,
 so the counts compare with Triangle's, and an encroaching point is rejected
 before the mesh is touched (Triangle inserts it and undoes the flips).  The
-cavity is collected, its rim put in Triangle's order, and then replaced by
+cavity is collected, its rim listed in Triangle's order, and then replaced by
 the fan of triangles from the new vertex to the rim; ``triangles_created``
 of an insertion is the new vertex's degree, the paper's measure.
 
@@ -17,7 +17,7 @@ reconstruct/__init__.py).
 
 Scratch: ``Refiner.cav`` (the cavity, and from its end the triangles
 tested outside it), ``Refiner.bnd``/``bval`` (the rim), ``Refiner.fan``
-(the new triangles), ``Mesh.tflag`` (1 in the cavity, 2 tested outside;
+(the rim's order, then the new triangles), ``Mesh.tflag`` (1 in the cavity, 2 tested outside;
 all 0 again when a function here returns) and ``Mesh.vslot``.
 """
 
@@ -158,30 +158,35 @@ def forget_cavity(r: Refiner, m: Mesh, n: Index) -> cython.void:
 @cython.nogil
 @cython.exceptval(check=False)
 def order_rim(r: Refiner, m: Mesh, nb: Index, first: Index) -> cython.void:
-    """Put the cavity's rim ``r.bnd[:nb]`` in counter-clockwise order from
-    the edge leaving vertex ``first``: the order in which Triangle's flips
-    meet the new vertex's triangles, so bad triangles and encroached
-    subsegments are queued in its order."""
+    """List the cavity's rim rows ``r.bnd[:nb]`` in counter-clockwise order
+    from the edge leaving vertex ``first`` in ``r.fan[:nb]`` (row numbers;
+    ``fill_cavity`` makes the fan in that order): the order in which
+    Triangle's flips meet the new vertex's triangles, so bad triangles and
+    encroached subsegments are queued in its order.
+
+    Positions are swapped until each holds the row whose origin the
+    previous one's destination is; a chain that ends early (a rim that is a
+    path from elsewhere) leaves the rest as the swaps left them.  (The rows
+    stay where they are: moving their seven fields cost more than the rest
+    of the ordering.)"""
     j: Index
     want: Index
+    k: Index
     for j in range(nb):
-        m.vslot[r.bnd[j, 1]] = j
+        r.fan[j] = j
+        m.vslot[r.bnd[j, 1]] = j  # where the row leaving that vertex is listed
     want = first
     for pos in range(nb):
         j = m.vslot[want]
         if j < 0:
             break
-        if j != pos:  # (the rows' five and two fields, written out)
-            r.bnd[j, 0], r.bnd[pos, 0] = r.bnd[pos, 0], r.bnd[j, 0]
-            r.bnd[j, 1], r.bnd[pos, 1] = r.bnd[pos, 1], r.bnd[j, 1]
-            r.bnd[j, 2], r.bnd[pos, 2] = r.bnd[pos, 2], r.bnd[j, 2]
-            r.bnd[j, 3], r.bnd[pos, 3] = r.bnd[pos, 3], r.bnd[j, 3]
-            r.bnd[j, 4], r.bnd[pos, 4] = r.bnd[pos, 4], r.bnd[j, 4]
-            r.bval[j, 0], r.bval[pos, 0] = r.bval[pos, 0], r.bval[j, 0]
-            r.bval[j, 1], r.bval[pos, 1] = r.bval[pos, 1], r.bval[j, 1]
-            m.vslot[r.bnd[j, 1]] = j
-            m.vslot[r.bnd[pos, 1]] = pos
-        want = r.bnd[pos, 2]
+        if j != pos:
+            k = r.fan[j]
+            r.fan[j] = r.fan[pos]
+            r.fan[pos] = k
+            m.vslot[r.bnd[r.fan[j], 1]] = j
+            m.vslot[r.bnd[k, 1]] = pos
+        want = r.bnd[r.fan[pos], 2]
     for j in range(nb):
         m.vslot[r.bnd[j, 1]] = -1
 
@@ -190,11 +195,13 @@ def order_rim(r: Refiner, m: Mesh, nb: Index, first: Index) -> cython.void:
 @cython.nogil
 @cython.exceptval(check=False)
 def fill_cavity(r: Refiner, m: Mesh, p: Index, n: Index, nb: Index) -> cython.void:
-    """Replace the cavity by the fan of triangles from ``p`` to its rim
-    (listed in ``r.fan[:nb]``)."""
+    """Replace the cavity by the fan of triangles from ``p`` to its rim, in
+    the order ``order_rim`` listed in ``r.fan[:nb]``; the new triangles
+    take those places in ``r.fan``."""
     t: Index
     u: Index
     v: Index
+    k: Index
     nxt: Index
     for i in range(n):
         t = r.cav[i]
@@ -202,16 +209,17 @@ def fill_cavity(r: Refiner, m: Mesh, p: Index, n: Index, nb: Index) -> cython.vo
         kill_triangle(m, t)
     m.work[C_DELETED] += n
     for j in range(nb):
-        u = r.bnd[j, 1]
-        v = r.bnd[j, 2]
+        k = r.fan[j]
+        u = r.bnd[k, 1]
+        v = r.bnd[k, 2]
         t = new_triangle(m, p, u, v)
-        m.work[C_CREATED] += 1
-        bond(m, 3 * t, r.bnd[j, 0])  # (new_triangle left the other edges unlinked)
-        m.seg[3 * t] = cython.cast(cython.int, r.bnd[j, 3])
-        inherit(m, t, r.bval[j, 0], r.bval[j, 1])
+        bond(m, 3 * t, r.bnd[k, 0])  # (new_triangle left the other edges unlinked)
+        m.seg[3 * t] = cython.cast(cython.int, r.bnd[k, 3])
+        inherit(m, t, r.bval[k, 0], r.bval[k, 1])
         m.vslot[u] = t
         r.fan[j] = t
         remember_corners(m, t)
+    m.work[C_CREATED] += nb
     for j in range(nb):  # link the fan: edge v -> p of (p, u, v) to p -> v of the next
         u = r.bnd[j, 1]
         v = r.bnd[j, 2]

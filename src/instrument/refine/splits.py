@@ -585,10 +585,12 @@ def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cyth
     order_rim(r, m, nb, m.corner[lprev(e)] if status == LOC_ON_EDGE else m.corner[lnext(e)])
     # a point inside a subsegment's lens is rejected; the subsegment is split
     encroached: Index = 0
-    for j in range(nb):
-        if r.bnd[j, 3] != NO_SEG and in_lens(r, m, r.bnd[j, 1], r.bnd[j, 2], px, py):
+    k: Index
+    for j in range(nb):  # in the rim's order
+        k = r.fan[j]
+        if r.bnd[k, 3] != NO_SEG and in_lens(r, m, r.bnd[k, 1], r.bnd[k, 2], px, py):
             encroached += 1
-            queue_side(r, m, r.bnd[j, 4], True)
+            queue_side(r, m, r.bnd[k, 4], True)
     if encroached:
         forget_cavity(r, m, n)
         m.work[C_REJECTED] += 1

@@ -58,7 +58,7 @@ cdef class Refiner:
     cdef public int acute            # its ends next to another subsegment as it was pooled: 1 org, 2 dest
     # scratch of one insertion (cavity.py)
     cdef public long long[::1] cav   # cavity triangles (and, from the end, those tested outside)
-    cdef public long long[::1] fan   # the triangles an insertion made
+    cdef public long long[::1] fan   # the rim's rows in order (cavity.order_rim), then the triangles an insertion made
     cdef public long long[:, ::1] bnd  # cavity rim edges: (outer twin, org, dest, record, edge)
     cdef public double[:, ::1] bval  # and the area bound and attribute each passes on
     cdef public double[::1] carry    # the area bound each cavity triangle passes on (cavity.py)
