@@ -164,29 +164,43 @@ def order_rim(r: Refiner, m: Mesh, nb: Index, first: Index) -> cython.void:
     Triangle's flips meet the new vertex's triangles, so bad triangles and
     encroached subsegments are queued in its order.
 
-    Positions are swapped until each holds the row whose origin the
-    previous one's destination is; a chain that ends early (a rim that is a
-    path from elsewhere) leaves the rest as the swaps left them.  (The rows
-    stay where they are: moving their seven fields cost more than the rest
-    of the ordering.)"""
+    The rim is a cycle (a path from ``first`` when a boundary subsegment is
+    split), walked from row to row by the vertex each ends at.  Should the
+    walk end or close before it has listed every row, positions are swapped
+    instead until each holds the row whose origin the previous one's
+    destination is, leaving the rest as the swaps left them (how the rows
+    themselves were once moved).  (The rows stay where they are: moving
+    their seven fields, or a swap per step on the walk's critical path,
+    cost more than the rest of the insertion's bookkeeping.)"""
     j: Index
     want: Index
     k: Index
+    pos: Index = 0
     for j in range(nb):
-        r.fan[j] = j
-        m.vslot[r.bnd[j, 1]] = j  # where the row leaving that vertex is listed
+        m.vslot[r.bnd[j, 1]] = j  # the row leaving that vertex
     want = first
-    for pos in range(nb):
+    while pos < nb:
         j = m.vslot[want]
-        if j < 0:
+        if j < 0 or (pos > 0 and want == first):
             break
-        if j != pos:
-            k = r.fan[j]
-            r.fan[j] = r.fan[pos]
-            r.fan[pos] = k
-            m.vslot[r.bnd[r.fan[j], 1]] = j
-            m.vslot[r.bnd[k, 1]] = pos
-        want = r.bnd[r.fan[pos], 2]
+        r.fan[pos] = j
+        pos += 1
+        want = r.bnd[j, 2]
+    if pos < nb:  # the swaps, from the rows in place (vslot: where each is listed)
+        for j in range(nb):
+            r.fan[j] = j
+        want = first
+        for pos in range(nb):
+            j = m.vslot[want]
+            if j < 0:
+                break
+            if j != pos:
+                k = r.fan[j]
+                r.fan[j] = r.fan[pos]
+                r.fan[pos] = k
+                m.vslot[r.bnd[r.fan[j], 1]] = j
+                m.vslot[r.bnd[k, 1]] = pos
+            want = r.bnd[r.fan[pos], 2]
     for j in range(nb):
         m.vslot[r.bnd[j, 1]] = -1
 
