@@ -222,6 +222,10 @@ def fill_cavity(r: Refiner, m: Mesh, p: Index, n: Index, nb: Index) -> cython.vo
         m.tflag[t] = 0
         kill_triangle(m, t)
     m.work[C_DELETED] += n
+    links: Index = 0
+    first_org: Index = -1
+    prev_dest: Index = -1
+    prev: Index = -1
     for j in range(nb):
         k = r.fan[j]
         u = r.bnd[k, 1]
@@ -230,19 +234,35 @@ def fill_cavity(r: Refiner, m: Mesh, p: Index, n: Index, nb: Index) -> cython.vo
         bond(m, 3 * t, r.bnd[k, 0])  # (new_triangle left the other edges unlinked)
         m.seg[3 * t] = cython.cast(cython.int, r.bnd[k, 3])
         inherit(m, t, r.bval[k, 0], r.bval[k, 1])
-        m.vslot[u] = t
         r.fan[j] = t
         remember_corners(m, t)
+        # link the fan: edge v -> p of (p, u, v) to p -> v of the next, which
+        # the rim's order puts right after it
+        if prev_dest == u:
+            bond(m, 3 * prev + 1, 3 * t + 2)
+            links += 1
+        if j == 0:
+            first_org = u
+        prev_dest = v
+        prev = t
+    if nb > 1 and prev_dest == first_org:  # around the cycle
+        bond(m, 3 * prev + 1, 3 * r.fan[0] + 2)
+        links += 1
     m.work[C_CREATED] += nb
-    for j in range(nb):  # link the fan: edge v -> p of (p, u, v) to p -> v of the next
-        u = r.bnd[j, 1]
-        v = r.bnd[j, 2]
-        t = m.vslot[u]
-        nxt = m.vslot[v]
-        if nxt >= 0:
-            bond(m, 3 * t + 1, 3 * nxt + 2)
-    for j in range(nb):
-        m.vslot[r.bnd[j, 1]] = -1
+    # Each link joins a vertex's one outgoing and one incoming rim edge, so
+    # nb - 1 links (a path) or nb (a cycle) made every one there is; fewer
+    # mean a rim not listed in order (order_rim's fallback): link by vertex
+    if links < nb - 1:
+        for j in range(nb):
+            t = r.fan[j]
+            m.vslot[m.corner[3 * t + 1]] = t
+        for j in range(nb):
+            t = r.fan[j]
+            nxt = m.vslot[m.corner[3 * t + 2]]
+            if nxt >= 0:
+                bond(m, 3 * t + 1, 3 * nxt + 2)
+        for j in range(nb):
+            m.vslot[m.corner[3 * r.fan[j] + 1]] = -1
 
 
 @cython.ccall
