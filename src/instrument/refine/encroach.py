@@ -64,45 +64,34 @@ def enc_edge(r: Refiner, m: Mesh, i: Index) -> Index:
     return e
 
 
-@cython.ccall
-@cython.nogil
-@cython.exceptval(check=False)
-def may_split(r: Refiner, m: Mesh, e: Index) -> cython.bint:
-    """-Y keeps boundary subsegments whole, -YY every subsegment."""
-    y: cython.int = r.cfg.keep_segments
-    return y == 0 or (y == 1 and m.twin[e] != NO_EDGE)
+# The tests every new subsegment side and rim edge takes: compiled,
+# encroach.pxd's inline definitions; the same functions for the pure-Python mode.
+if not cython.compiled:
 
+    def may_split(r: Refiner, m: Mesh, e: Index) -> bool:
+        """-Y keeps boundary subsegments whole, -YY every subsegment."""
+        y = r.cfg.keep_segments
+        return y == 0 or (y == 1 and m.twin[e] != NO_EDGE)
 
-@cython.ccall
-@cython.nogil
-@cython.exceptval(check=False)
-def queue_side(r: Refiner, m: Mesh, e: Index, hit: cython.bint) -> cython.bint:
-    """Pool subsegment edge ``e`` (whose own apex encroaches if ``hit``) on
-    an encroaching side: the other side if its apex encroaches, as Triangle
-    orients its records, since the side decides where shells are measured
-    from.  Returns whether it is encroached."""
-    tw: Index = m.twin[e]
-    b: Index
-    if tw != NO_EDGE:
-        b = m.corner[tw]
-        if in_lens(r, m, m.corner[lnext(e)], m.corner[lprev(e)], m.xy[b, 0], m.xy[b, 1]):
-            e = tw
-            hit = True
-    if hit and may_split(r, m, e):
-        enc_push(r, m, e)
-    return hit
+    def queue_side(r: Refiner, m: Mesh, e: Index, hit: bool) -> bool:
+        """Pool subsegment edge ``e`` (whose own apex encroaches if ``hit``) on
+        an encroaching side: the other side if its apex encroaches, as Triangle
+        orients its records, since the side decides where shells are measured
+        from.  Returns whether it is encroached."""
+        tw = m.twin[e]
+        if tw != NO_EDGE:
+            b = m.corner[tw]
+            if in_lens(r, m, m.corner[lnext(e)], m.corner[lprev(e)], m.xy[b, 0], m.xy[b, 1]):
+                e = tw
+                hit = True
+        if hit and may_split(r, m, e):
+            enc_push(r, m, e)
+        return hit
 
-
-@cython.ccall
-@cython.nogil
-@cython.exceptval(check=False)
-def check_subsegment(r: Refiner, m: Mesh, e: Index) -> cython.bint:
-    """Pool subsegment edge ``e`` if an apex on either side encroaches it."""
-    a: Index = m.corner[e]
-    return queue_side(r, m, e, in_lens(r, m, m.corner[lnext(e)], m.corner[lprev(e)], m.xy[a, 0], m.xy[a, 1]))
-
-
-if not cython.compiled:  # compiled, encroach.pxd's inline definition (every new subsegment side and rim edge)
+    def check_subsegment(r: Refiner, m: Mesh, e: Index) -> bool:
+        """Pool subsegment edge ``e`` if an apex on either side encroaches it."""
+        a = m.corner[e]
+        return queue_side(r, m, e, in_lens(r, m, m.corner[lnext(e)], m.corner[lprev(e)], m.xy[a, 0], m.xy[a, 1]))
 
     def in_lens(r: Refiner, m: Mesh, e0: Index, e1: Index, ax: float, ay: float) -> bool:
         """Does the point (ax, ay) lie in the diametral lens (or circle with -D)
