@@ -19,7 +19,7 @@ from __future__ import annotations
 import numpy as np
 
 from instrument.check import check_mesh
-from instrument.core.mesh import NO_EDGE, V_FREE
+from instrument.core.mesh import NO_EDGE, V_FREE, Mesh
 from instrument.core.navigate import build_vertex_edges, find_edge
 from instrument.counters import C_CREATED, C_DELETED, C_INCIRCLE
 from instrument.refine.cavity import collect_cavity, fill_cavity, forget_cavity, mark_both, new_vertex, order_rim
@@ -113,6 +113,58 @@ def test_order_rim_starts_at_the_given_vertex_and_goes_counter_clockwise():
         assert [tuple(np.asarray(r.bval)[k]) for k in order] == [value[e] for e in expected]
         assert (np.asarray(m.vslot) == -1).all()  # its scratch is clear again
     forget_cavity(r, m, n)
+
+
+def _swapped_order(orgs: list[int], dests: list[int], first: int) -> list[int]:
+    """The rows' order as order_rim once made it, by moving whole rows: each
+    position takes the row leaving the previous one's destination, until
+    no row leaves it; the rest stay as the swaps left them."""
+    rows = list(range(len(orgs)))
+    for pos in range(len(rows)):
+        want = first if pos == 0 else dests[rows[pos - 1]]
+        at = [orgs[rows[j]] for j in range(len(rows))]
+        if want not in at:
+            break
+        j = at.index(want)
+        rows[j], rows[pos] = rows[pos], rows[j]
+    return rows
+
+
+def test_order_rim_lists_a_rim_it_cannot_walk_as_the_swaps_did():
+    """A rim that is no single chain from ``first`` (a path from elsewhere,
+    two cycles, a cycle and a path) makes the walk give up, and the
+    positions are swapped instead, which lists the rows as moving them
+    whole did; a single chain is listed by the walk, the same way."""
+    rng = np.random.default_rng(7)
+    m = Mesh(rng.random((64, 2)), 8)
+    r = refiner()
+    walked = swapped = 0
+    for case in range(400):
+        fresh = iter(int(v) for v in rng.permutation(64))
+        orgs: list[int] = []
+        dests: list[int] = []
+        for _ in range(int(rng.integers(1, 4))):  # components: paths and cycles on fresh vertices
+            chain = [next(fresh) for _ in range(int(rng.integers(2, 6)))]
+            if rng.random() < 0.5:
+                chain.append(chain[0])
+            orgs += chain[:-1]
+            dests += chain[1:]
+        nb = len(orgs)
+        shuffle = rng.permutation(nb)
+        orgs = [orgs[k] for k in shuffle]
+        dests = [dests[k] for k in shuffle]
+        bnd = np.asarray(r.bnd)
+        bnd[:nb, 1] = orgs
+        bnd[:nb, 2] = dests
+        first = orgs[int(rng.integers(nb))]
+        expected = _swapped_order(orgs, dests, first)
+        chained = all(dests[expected[k]] == orgs[expected[k + 1]] for k in range(nb - 1))
+        walked += chained
+        swapped += not chained
+        order_rim(r, m, nb, first)
+        assert [int(k) for k in np.asarray(r.fan)[:nb]] == expected, case
+        assert (np.asarray(m.vslot) == -1).all()
+    assert walked > 50 and swapped > 50  # both ways were taken
 
 
 def test_rim_values_area_bound_folded_along_the_flips_attribute_of_the_inner_triangle():
