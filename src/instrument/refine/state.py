@@ -16,7 +16,6 @@ import math
 import numpy as np
 
 import cython
-from cython.cimports.instrument.core.mesh import Index
 
 from ..core.filled import filled
 from ..counters import NAMES
