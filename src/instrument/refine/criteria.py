@@ -171,7 +171,6 @@ def _small_input_angle(m: Mesh, segs: Subsegments, u: Index, v: Index) -> cython
     s2: Index = _segment_of(m, v)
     if s1 < 0 or s2 < 0:
         return False
-    xy = m.xy
     a1: Index = segs.ends[s1, 0]
     b1: Index = segs.ends[s1, 1]
     a2: Index = segs.ends[s2, 0]
@@ -185,10 +184,10 @@ def _small_input_angle(m: Mesh, segs: Subsegments, u: Index, v: Index) -> cython
         j = a1
     if j < 0:
         return False
-    ux: cython.double = xy[u, 0] - xy[j, 0]
-    uy: cython.double = xy[u, 1] - xy[j, 1]
-    vx: cython.double = xy[v, 0] - xy[j, 0]
-    vy: cython.double = xy[v, 1] - xy[j, 1]
+    ux: cython.double = m.xy[u, 0] - m.xy[j, 0]
+    uy: cython.double = m.xy[u, 1] - m.xy[j, 1]
+    vx: cython.double = m.xy[v, 0] - m.xy[j, 0]
+    vy: cython.double = m.xy[v, 1] - m.xy[j, 1]
     # squares overflow beyond 2^511 (inf < inf: no exemption) and vanish
     # below 2^-537: out of range, compare the vectors scaled by a power of two
     ux, uy, vx, vy = scaled_pair(ux, uy, vx, vy, 2.0**240)
@@ -203,11 +202,10 @@ def _small_input_angle(m: Mesh, segs: Subsegments, u: Index, v: Index) -> cython
 def builtin_unsuitable(m: Mesh, o: Index, d: Index, a: Index) -> cython.bint:
     """Triangle's sample ``triunsuitable``: the longest edge squared exceeds
     0.05 (x^2 + y^2) + 0.02 at the origin vertex ``o``."""
-    xy = m.xy
-    od: cython.double = (xy[o, 0] - xy[d, 0]) * (xy[o, 0] - xy[d, 0]) + (xy[o, 1] - xy[d, 1]) * (xy[o, 1] - xy[d, 1])
-    da: cython.double = (xy[d, 0] - xy[a, 0]) * (xy[d, 0] - xy[a, 0]) + (xy[d, 1] - xy[a, 1]) * (xy[d, 1] - xy[a, 1])
-    ao: cython.double = (xy[a, 0] - xy[o, 0]) * (xy[a, 0] - xy[o, 0]) + (xy[a, 1] - xy[o, 1]) * (xy[a, 1] - xy[o, 1])
-    return max(od, da, ao) > 0.05 * (xy[o, 0] * xy[o, 0] + xy[o, 1] * xy[o, 1]) + 0.02
+    od: cython.double = (m.xy[o, 0] - m.xy[d, 0]) * (m.xy[o, 0] - m.xy[d, 0]) + (m.xy[o, 1] - m.xy[d, 1]) * (m.xy[o, 1] - m.xy[d, 1])
+    da: cython.double = (m.xy[d, 0] - m.xy[a, 0]) * (m.xy[d, 0] - m.xy[a, 0]) + (m.xy[d, 1] - m.xy[a, 1]) * (m.xy[d, 1] - m.xy[a, 1])
+    ao: cython.double = (m.xy[a, 0] - m.xy[o, 0]) * (m.xy[a, 0] - m.xy[o, 0]) + (m.xy[a, 1] - m.xy[o, 1]) * (m.xy[a, 1] - m.xy[o, 1])
+    return max(od, da, ao) > 0.05 * (m.xy[o, 0] * m.xy[o, 0] + m.xy[o, 1] * m.xy[o, 1]) + 0.02
 
 
 @cython.ccall
