@@ -19,7 +19,7 @@ from __future__ import annotations
 import numpy as np
 
 from instrument.check import check_mesh
-from instrument.core.mesh import NO_EDGE, V_FREE
+from instrument.core.mesh import NO_EDGE, V_FREE, Mesh
 from instrument.core.navigate import build_vertex_edges, find_edge
 from instrument.counters import C_CREATED, C_DELETED, C_INCIRCLE
 from instrument.refine.cavity import collect_cavity, fill_cavity, forget_cavity, mark_both, new_vertex, order_rim
@@ -103,13 +103,68 @@ def test_order_rim_starts_at_the_given_vertex_and_goes_counter_clockwise():
     m.add_area_bounds(np.arange(1.0, m.nslot + 1.0))  # a distinct bound per slot, to follow the rows
     r = refiner()
     n, nb = collect_cavity(r, m, *P, slot_of(m, {0, 1, 4}), -1, -1)
-    value = {edge: tuple(np.asarray(r.bval)[j]) for j, edge in enumerate(_rim(r, nb))}
+    rows = _rim(r, nb)
+    value = {edge: tuple(np.asarray(r.bval)[j]) for j, edge in enumerate(rows)}
     for first, expected in ((2, [(2, 4), (4, 0), (0, 1), (1, 2)]), (0, [(0, 1), (1, 2), (2, 4), (4, 0)])):
         order_rim(r, m, nb, first)
-        assert _rim(r, nb) == expected
-        assert [tuple(np.asarray(r.bval)[j]) for j in range(nb)] == [value[e] for e in expected]  # rows move whole
+        order = [int(k) for k in np.asarray(r.fan)[:nb]]  # the rows, listed in order
+        assert [rows[k] for k in order] == expected
+        assert _rim(r, nb) == rows  # the rows themselves stay where they are, values and all
+        assert [tuple(np.asarray(r.bval)[k]) for k in order] == [value[e] for e in expected]
         assert (np.asarray(m.vslot) == -1).all()  # its scratch is clear again
     forget_cavity(r, m, n)
+
+
+def _swapped_order(orgs: list[int], dests: list[int], first: int) -> list[int]:
+    """The rows' order as order_rim once made it, by moving whole rows: each
+    position takes the row leaving the previous one's destination, until
+    no row leaves it; the rest stay as the swaps left them."""
+    rows = list(range(len(orgs)))
+    for pos in range(len(rows)):
+        want = first if pos == 0 else dests[rows[pos - 1]]
+        at = [orgs[rows[j]] for j in range(len(rows))]
+        if want not in at:
+            break
+        j = at.index(want)
+        rows[j], rows[pos] = rows[pos], rows[j]
+    return rows
+
+
+def test_order_rim_lists_a_rim_it_cannot_walk_as_the_swaps_did():
+    """A rim that is no single chain from ``first`` (a path from elsewhere,
+    two cycles, a cycle and a path) makes the walk give up, and the
+    positions are swapped instead, which lists the rows as moving them
+    whole did; a single chain is listed by the walk, the same way."""
+    rng = np.random.default_rng(7)
+    m = Mesh(rng.random((64, 2)), 8)
+    r = refiner()
+    walked = swapped = 0
+    for case in range(400):
+        fresh = iter(int(v) for v in rng.permutation(64))
+        orgs: list[int] = []
+        dests: list[int] = []
+        for _ in range(int(rng.integers(1, 4))):  # components: paths and cycles on fresh vertices
+            chain = [next(fresh) for _ in range(int(rng.integers(2, 6)))]
+            if rng.random() < 0.5:
+                chain.append(chain[0])
+            orgs += chain[:-1]
+            dests += chain[1:]
+        nb = len(orgs)
+        shuffle = rng.permutation(nb)
+        orgs = [orgs[k] for k in shuffle]
+        dests = [dests[k] for k in shuffle]
+        bnd = np.asarray(r.bnd)
+        bnd[:nb, 1] = orgs
+        bnd[:nb, 2] = dests
+        first = orgs[int(rng.integers(nb))]
+        expected = _swapped_order(orgs, dests, first)
+        chained = all(dests[expected[k]] == orgs[expected[k + 1]] for k in range(nb - 1))
+        walked += chained
+        swapped += not chained
+        order_rim(r, m, nb, first)
+        assert [int(k) for k in np.asarray(r.fan)[:nb]] == expected, case
+        assert (np.asarray(m.vslot) == -1).all()
+    assert walked > 50 and swapped > 50  # both ways were taken
 
 
 def test_rim_values_area_bound_folded_along_the_flips_attribute_of_the_inner_triangle():
@@ -174,7 +229,8 @@ def test_a_point_on_an_edge_takes_both_sides_and_the_edge_goes():
     assert (n, nb) == (2, 4)
     assert m.work[C_INCIRCLE] - tests == 2  # top and left, both outside
     order_rim(r, m, nb, 0)
-    assert _rim(r, nb) == [(0, 1), (1, 2), (2, 4), (4, 0)]
+    rows = _rim(r, nb)
+    assert [rows[k] for k in np.asarray(r.fan)[:nb]] == [(0, 1), (1, 2), (2, 4), (4, 0)]  # listed in order
     fill_cavity(r, m, p, n, nb)
     assert corner_sets(m) == {frozenset(s) for s in ({5, 0, 1}, {5, 1, 2}, {5, 2, 4}, {5, 4, 0}, {2, 3, 4}, {3, 0, 4})}
     assert find_edge(m, 1, 4) < 0

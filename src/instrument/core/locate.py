@@ -78,7 +78,6 @@ def walk(m: Mesh, t: Index, px: cython.double, py: cython.double, max_steps: Ind
     vertex; for LOC_OUTSIDE the ghost triangle's finite edge (or, in a mesh
     without ghosts, the boundary edge the point lies beyond).
     """
-    xy = m.xy
     steps: Index = 0
     r: Index
     zeros: Index
@@ -105,7 +104,7 @@ def walk(m: Mesh, t: Index, px: cython.double, py: cython.double, max_steps: Ind
             o = m.corner[lnext(e)]
             d = m.corner[lprev(e)]
             m.work[C_ORIENT] += 1
-            s = orient2d(xy[o, 0], xy[o, 1], xy[d, 0], xy[d, 1], px, py)
+            s = orient2d(m.xy[o, 0], m.xy[o, 1], m.xy[d, 0], m.xy[d, 1], px, py)
             if s < 0.0:
                 tw = m.twin[e]
                 if tw == NO_EDGE:
@@ -135,12 +134,11 @@ def line_walk(m: Mesh, t: Index, px: cython.double, py: cython.double, max_steps
     Returns ``(status, e)`` as ``walk`` does, or ``(LOC_BLOCKED, e)`` with the
     subsegment or boundary edge ``e`` the line crosses.
     """
-    xy = m.xy
     a: Index = m.corner[3 * t]
     b: Index = m.corner[3 * t + 1]
     c: Index = m.corner[3 * t + 2]
-    sx: cython.double = (xy[a, 0] + xy[b, 0] + xy[c, 0]) / 3.0
-    sy: cython.double = (xy[a, 1] + xy[b, 1] + xy[c, 1]) / 3.0
+    sx: cython.double = (m.xy[a, 0] + m.xy[b, 0] + m.xy[c, 0]) / 3.0
+    sy: cython.double = (m.xy[a, 1] + m.xy[b, 1] + m.xy[c, 1]) / 3.0
     entered: Index = -1  # the edge we came in through
     exit_edge: Index
     zeros: Index
@@ -164,12 +162,12 @@ def line_walk(m: Mesh, t: Index, px: cython.double, py: cython.double, max_steps
             o = m.corner[lnext(e)]
             d = m.corner[lprev(e)]
             m.work[C_ORIENT] += 1
-            s = orient2d(xy[o, 0], xy[o, 1], xy[d, 0], xy[d, 1], px, py)
+            s = orient2d(m.xy[o, 0], m.xy[o, 1], m.xy[d, 0], m.xy[d, 1], px, py)
             if s < 0.0:
                 # the line leaves through this edge if it passes between o and d
                 m.work[C_ORIENT] += 2
-                so = orient2d(sx, sy, px, py, xy[o, 0], xy[o, 1])
-                sd = orient2d(sx, sy, px, py, xy[d, 0], xy[d, 1])
+                so = orient2d(sx, sy, px, py, m.xy[o, 0], m.xy[o, 1])
+                sd = orient2d(sx, sy, px, py, m.xy[d, 0], m.xy[d, 1])
                 if so <= 0.0 and sd >= 0.0:
                     exit_edge = e
                     break
@@ -207,7 +205,6 @@ def precise_walk(m: Mesh, e: Index, px: cython.double, py: cython.double, max_st
     with the subsegment or boundary edge in the way; LOC_FAILED after
     ``max_steps``.
     """
-    xy = m.xy
     o: Index
     d: Index
     a: Index
@@ -221,13 +218,13 @@ def precise_walk(m: Mesh, e: Index, px: cython.double, py: cython.double, max_st
         o = m.corner[lnext(e)]
         d = m.corner[lprev(e)]
         a = m.corner[e]
-        if xy[a, 0] == px and xy[a, 1] == py:
+        if m.xy[a, 0] == px and m.xy[a, 1] == py:
             return LOC_ON_VERTEX, lprev(e)
         m.work[C_ORIENT] += 2
-        left = orient2d(xy[o, 0], xy[o, 1], xy[a, 0], xy[a, 1], px, py)
-        right = orient2d(xy[a, 0], xy[a, 1], xy[d, 0], xy[d, 1], px, py)
+        left = orient2d(m.xy[o, 0], m.xy[o, 1], m.xy[a, 0], m.xy[a, 1], px, py)
+        right = orient2d(m.xy[a, 0], m.xy[a, 1], m.xy[d, 0], m.xy[d, 1], px, py)
         if left > 0.0 and right > 0.0:
-            go_left = scaled_dot(xy[a, 0] - px, xy[a, 1] - py, xy[d, 0] - xy[o, 0], xy[d, 1] - xy[o, 1]) > 0.0
+            go_left = scaled_dot(m.xy[a, 0] - px, m.xy[a, 1] - py, m.xy[d, 0] - m.xy[o, 0], m.xy[d, 1] - m.xy[o, 1]) > 0.0
         elif left > 0.0:
             go_left = True
         elif right > 0.0:

@@ -292,30 +292,50 @@ def turn_corners(m: Mesh, shift: Index) -> cython.void:
     slots (numpy's version took 0.18 s and several copies of the tables at
     1.6 million triangles): new corner ``k`` is old corner ``(k + shift) %
     3``; a twin, an edge of a triangle turned the same way, is renumbered
-    to match."""
+    to match (shift 1: edge k becomes k - 1, that is lprev; shift 2: lnext).
+    The two shifts are written out (refinement turns every triangle before
+    and after, and the remainders cost more than the moves)."""
     e: Index
-    k: Index
-    src: Index
-    tw: Index
-    j: Index
-    c = cython.declare(cython.int[3])
-    w = cython.declare(cython.int[3])
-    s = cython.declare(cython.int[3])
+    c0: cython.int
+    c1: cython.int
+    c2: cython.int
+    w0: Index
+    w1: Index
+    w2: Index
+    s0: cython.int
+    s1: cython.int
+    s2: cython.int
     for t in range(m.nslot):
         e = 3 * t
-        for k in range(3):
-            c[k] = m.corner[e + k]
-            w[k] = m.twin[e + k]
-            s[k] = m.seg[e + k]
-        for k in range(3):
-            src = (k + shift) % 3
-            m.corner[e + k] = c[src]
-            m.seg[e + k] = s[src]
-            tw = w[src]
-            if tw >= 0:
-                j = tw % 3
-                tw = tw - j + (j - shift + 3) % 3
-            m.twin[e + k] = cython.cast(cython.int, tw)
+        c0 = m.corner[e]
+        c1 = m.corner[e + 1]
+        c2 = m.corner[e + 2]
+        w0 = m.twin[e]
+        w1 = m.twin[e + 1]
+        w2 = m.twin[e + 2]
+        s0 = m.seg[e]
+        s1 = m.seg[e + 1]
+        s2 = m.seg[e + 2]
+        if shift == 1:  # (c1, c2, c0)
+            m.corner[e] = c1
+            m.corner[e + 1] = c2
+            m.corner[e + 2] = c0
+            m.seg[e] = s1
+            m.seg[e + 1] = s2
+            m.seg[e + 2] = s0
+            m.twin[e] = cython.cast(cython.int, lprev(w1) if w1 >= 0 else w1)
+            m.twin[e + 1] = cython.cast(cython.int, lprev(w2) if w2 >= 0 else w2)
+            m.twin[e + 2] = cython.cast(cython.int, lprev(w0) if w0 >= 0 else w0)
+        else:  # (c2, c0, c1)
+            m.corner[e] = c2
+            m.corner[e + 1] = c0
+            m.corner[e + 2] = c1
+            m.seg[e] = s2
+            m.seg[e + 1] = s0
+            m.seg[e + 2] = s1
+            m.twin[e] = cython.cast(cython.int, lnext(w2) if w2 >= 0 else w2)
+            m.twin[e + 1] = cython.cast(cython.int, lnext(w0) if w0 >= 0 else w0)
+            m.twin[e + 2] = cython.cast(cython.int, lnext(w1) if w1 >= 0 else w1)
 
 
 @cython.ccall

@@ -47,13 +47,12 @@ def vertex_edge(m: Mesh, v: Index) -> Index:
     return e
 
 
-@cython.ccall
-@cython.nogil
-@cython.exceptval(check=False)
-def remember_corners(m: Mesh, t: Index) -> cython.void:
-    """Record triangle ``t``'s edges as the starting edges of its corners."""
-    for k in range(3):
-        m.vtri[m.corner[3 * t + k]] = 3 * t + (k + 2) % 3
+if not cython.compiled:  # compiled, navigate.pxd's inline definition (every insertion calls it)
+
+    def remember_corners(m: Mesh, t: Index) -> None:
+        """Record triangle ``t``'s edges as the starting edges of its corners."""
+        for k in range(3):
+            m.vtri[m.corner[3 * t + k]] = 3 * t + (k + 2) % 3
 
 
 @cython.cfunc

@@ -30,6 +30,7 @@ from . import divconq, parallel
 from .distinct import has_x_ties, mark_duplicates
 
 METHODS = ("divconq", "vertical", "incremental")
+SMALL_SORT = 1024  # points: below this, _lexicographic_order sorts in one call
 
 
 def delaunay(
@@ -101,8 +102,12 @@ def _lexicographic_order(xy: np.ndarray) -> np.ndarray:
     takes 1 ms at 10^5 points, but 13 on random points.  There, without
     ties in x, the order is unique, and the unstable (vectorised) sort of x
     alone gives it in 3 ms; ties in x need (x, y) after all.  One pass
-    counting where x turns tells the two kinds of input apart."""
+    counting where x turns tells the two kinds of input apart.  A small
+    input (up to ``SMALL_SORT`` points) takes numpy's stable lexsort at once:
+    one call instead of the five above (19 us against 4.5 at 141 points)."""
     n = xy.shape[0]
+    if n <= SMALL_SORT:
+        return np.lexsort((xy[:, 1], xy[:, 0]))
     x = xy[:, 0]
     if n > 2:
         d = np.diff(x)

@@ -6,7 +6,7 @@ without crossing a subsegment whose circumcircle strictly contains the
 point.  Its incircle tests are exactly the ones Lawson's flips would make,
 so the counts compare with Triangle's, and an encroaching point is rejected
 before the mesh is touched (Triangle inserts it and undoes the flips).  The
-cavity is collected, its rim put in Triangle's order, and then replaced by
+cavity is collected, its rim listed in Triangle's order, and then replaced by
 the fan of triangles from the new vertex to the rim; ``triangles_created``
 of an insertion is the new vertex's degree, the paper's measure.
 
@@ -17,7 +17,7 @@ reconstruct/__init__.py).
 
 Scratch: ``Refiner.cav`` (the cavity, and from its end the triangles
 tested outside it), ``Refiner.bnd``/``bval`` (the rim), ``Refiner.fan``
-(the new triangles), ``Mesh.tflag`` (1 in the cavity, 2 tested outside;
+(the rim's order, then the new triangles), ``Mesh.tflag`` (1 in the cavity, 2 tested outside;
 all 0 again when a function here returns) and ``Mesh.vslot``.
 """
 
@@ -44,17 +44,6 @@ from cython.cimports.instrument.refine.queues import queue_used
 from cython.cimports.instrument.refine.state import Refiner
 
 
-@cython.ccall
-@cython.nogil
-@cython.exceptval(check=False)
-def inherited(m: Mesh, t: Index) -> tuple[cython.double, cython.double]:
-    """Triangle slot ``t``'s area bound and regional attribute, which a new
-    triangle inherits: (-1, 0) when the run has none (the tables have no rows)."""
-    area: cython.double = m.area_bound[t] if m.area_bound.shape[0] else -1.0
-    attr: cython.double = m.attribute[t] if m.attribute.shape[0] else 0.0
-    return area, attr
-
-
 @cython.cfunc
 @cython.inline
 @cython.nogil
@@ -64,17 +53,6 @@ def _flip_bound(a: cython.double, b: cython.double) -> cython.double:
     get from bounds ``a`` and ``b``: their mean, or none (-1) if either has
     none (found by experiment: see reconstruct/__init__.py)."""
     return 0.5 * (a + b) if a > 0.0 and b > 0.0 else -1.0
-
-
-@cython.ccall
-@cython.nogil
-@cython.exceptval(check=False)
-def inherit(m: Mesh, t: Index, area: cython.double, attr: cython.double) -> cython.void:
-    """Give triangle slot ``t`` an area bound and a regional attribute (if the run has them)."""
-    if m.area_bound.shape[0]:
-        m.area_bound[t] = area
-    if m.attribute.shape[0]:
-        m.attribute[t] = attr
 
 
 @cython.ccall
@@ -180,27 +158,49 @@ def forget_cavity(r: Refiner, m: Mesh, n: Index) -> cython.void:
 @cython.nogil
 @cython.exceptval(check=False)
 def order_rim(r: Refiner, m: Mesh, nb: Index, first: Index) -> cython.void:
-    """Put the cavity's rim ``r.bnd[:nb]`` in counter-clockwise order from
-    the edge leaving vertex ``first``: the order in which Triangle's flips
-    meet the new vertex's triangles, so bad triangles and encroached
-    subsegments are queued in its order."""
+    """List the cavity's rim rows ``r.bnd[:nb]`` in counter-clockwise order
+    from the edge leaving vertex ``first`` in ``r.fan[:nb]`` (row numbers;
+    ``fill_cavity`` makes the fan in that order): the order in which
+    Triangle's flips meet the new vertex's triangles, so bad triangles and
+    encroached subsegments are queued in its order.
+
+    The rim is a cycle (a path from ``first`` when a boundary subsegment is
+    split), walked from row to row by the vertex each ends at.  Should the
+    walk end or close before it has listed every row, positions are swapped
+    instead until each holds the row whose origin the previous one's
+    destination is, leaving the rest as the swaps left them (how the rows
+    themselves were once moved).  (The rows stay where they are: moving
+    their seven fields, or a swap per step on the walk's critical path,
+    cost more than the rest of the insertion's bookkeeping.)"""
     j: Index
     want: Index
+    k: Index
+    pos: Index = 0
     for j in range(nb):
-        m.vslot[r.bnd[j, 1]] = j
+        m.vslot[r.bnd[j, 1]] = j  # the row leaving that vertex
     want = first
-    for pos in range(nb):
+    while pos < nb:
         j = m.vslot[want]
-        if j < 0:
+        if j < 0 or (pos > 0 and want == first):
             break
-        if j != pos:
-            for c in range(r.bnd.shape[1]):
-                r.bnd[j, c], r.bnd[pos, c] = r.bnd[pos, c], r.bnd[j, c]
-            for c in range(r.bval.shape[1]):
-                r.bval[j, c], r.bval[pos, c] = r.bval[pos, c], r.bval[j, c]
-            m.vslot[r.bnd[j, 1]] = j
-            m.vslot[r.bnd[pos, 1]] = pos
-        want = r.bnd[pos, 2]
+        r.fan[pos] = j
+        pos += 1
+        want = r.bnd[j, 2]
+    if pos < nb:  # the swaps, from the rows in place (vslot: where each is listed)
+        for j in range(nb):
+            r.fan[j] = j
+        want = first
+        for pos in range(nb):
+            j = m.vslot[want]
+            if j < 0:
+                break
+            if j != pos:
+                k = r.fan[j]
+                r.fan[j] = r.fan[pos]
+                r.fan[pos] = k
+                m.vslot[r.bnd[r.fan[j], 1]] = j
+                m.vslot[r.bnd[k, 1]] = pos
+            want = r.bnd[r.fan[pos], 2]
     for j in range(nb):
         m.vslot[r.bnd[j, 1]] = -1
 
@@ -209,37 +209,60 @@ def order_rim(r: Refiner, m: Mesh, nb: Index, first: Index) -> cython.void:
 @cython.nogil
 @cython.exceptval(check=False)
 def fill_cavity(r: Refiner, m: Mesh, p: Index, n: Index, nb: Index) -> cython.void:
-    """Replace the cavity by the fan of triangles from ``p`` to its rim
-    (listed in ``r.fan[:nb]``)."""
+    """Replace the cavity by the fan of triangles from ``p`` to its rim, in
+    the order ``order_rim`` listed in ``r.fan[:nb]``; the new triangles
+    take those places in ``r.fan``."""
     t: Index
     u: Index
     v: Index
+    k: Index
     nxt: Index
     for i in range(n):
         t = r.cav[i]
         m.tflag[t] = 0
         kill_triangle(m, t)
     m.work[C_DELETED] += n
+    links: Index = 0
+    first_org: Index = -1
+    prev_dest: Index = -1
+    prev: Index = -1
     for j in range(nb):
-        u = r.bnd[j, 1]
-        v = r.bnd[j, 2]
+        k = r.fan[j]
+        u = r.bnd[k, 1]
+        v = r.bnd[k, 2]
         t = new_triangle(m, p, u, v)
-        m.work[C_CREATED] += 1
-        bond(m, 3 * t, r.bnd[j, 0])  # (new_triangle left the other edges unlinked)
-        m.seg[3 * t] = cython.cast(cython.int, r.bnd[j, 3])
-        inherit(m, t, r.bval[j, 0], r.bval[j, 1])
-        m.vslot[u] = t
+        bond(m, 3 * t, r.bnd[k, 0])  # (new_triangle left the other edges unlinked)
+        m.seg[3 * t] = cython.cast(cython.int, r.bnd[k, 3])
+        inherit(m, t, r.bval[k, 0], r.bval[k, 1])
         r.fan[j] = t
         remember_corners(m, t)
-    for j in range(nb):  # link the fan: edge v -> p of (p, u, v) to p -> v of the next
-        u = r.bnd[j, 1]
-        v = r.bnd[j, 2]
-        t = m.vslot[u]
-        nxt = m.vslot[v]
-        if nxt >= 0:
-            bond(m, 3 * t + 1, 3 * nxt + 2)
-    for j in range(nb):
-        m.vslot[r.bnd[j, 1]] = -1
+        # link the fan: edge v -> p of (p, u, v) to p -> v of the next, which
+        # the rim's order puts right after it
+        if prev_dest == u:
+            bond(m, 3 * prev + 1, 3 * t + 2)
+            links += 1
+        if j == 0:
+            first_org = u
+        prev_dest = v
+        prev = t
+    if nb > 1 and prev_dest == first_org:  # around the cycle
+        bond(m, 3 * prev + 1, 3 * r.fan[0] + 2)
+        links += 1
+    m.work[C_CREATED] += nb
+    # Each link joins a vertex's one outgoing and one incoming rim edge, so
+    # nb - 1 links (a path) or nb (a cycle) made every one there is; fewer
+    # mean a rim not listed in order (order_rim's fallback): link by vertex
+    if links < nb - 1:
+        for j in range(nb):
+            t = r.fan[j]
+            m.vslot[m.corner[3 * t + 1]] = t
+        for j in range(nb):
+            t = r.fan[j]
+            nxt = m.vslot[m.corner[3 * t + 2]]
+            if nxt >= 0:
+                bond(m, 3 * t + 1, 3 * nxt + 2)
+        for j in range(nb):
+            m.vslot[m.corner[3 * r.fan[j] + 1]] = -1
 
 
 @cython.ccall
@@ -278,11 +301,26 @@ def new_vertex(
     return v
 
 
-@cython.ccall
-@cython.nogil
-@cython.exceptval(check=False)
-def mark_both(m: Mesh, e: Index, rec: Index) -> cython.void:
-    """Make edge ``e`` (both sides) part of subsegment record ``rec``."""
-    m.seg[e] = cython.cast(cython.int, rec)
-    if m.twin[e] != NO_EDGE:
-        m.seg[m.twin[e]] = cython.cast(cython.int, rec)
+# The small helpers every split and deletion calls: compiled, cavity.pxd's
+# inline definitions; the same functions for the pure-Python mode.
+if not cython.compiled:
+
+    def inherited(m: Mesh, t: Index) -> tuple[float, float]:
+        """Triangle slot ``t``'s area bound and regional attribute, which a new
+        triangle inherits: (-1, 0) when the run has none (the tables have no rows)."""
+        area = m.area_bound[t] if m.area_bound.shape[0] else -1.0
+        attr = m.attribute[t] if m.attribute.shape[0] else 0.0
+        return area, attr
+
+    def inherit(m: Mesh, t: Index, area: float, attr: float) -> None:
+        """Give triangle slot ``t`` an area bound and a regional attribute (if the run has them)."""
+        if m.area_bound.shape[0]:
+            m.area_bound[t] = area
+        if m.attribute.shape[0]:
+            m.attribute[t] = attr
+
+    def mark_both(m: Mesh, e: Index, rec: Index) -> None:
+        """Make edge ``e`` (both sides) part of subsegment record ``rec``."""
+        m.seg[e] = rec
+        if m.twin[e] != NO_EDGE:
+            m.seg[m.twin[e]] = rec

@@ -22,7 +22,7 @@ from cython.cimports.libc.math import fabs
 from cython.cimports.instrument.core.subsegments import Subsegments
 from cython.cimports.instrument.refine.cavity import collect_cavity, forget_cavity, inherited
 from cython.cimports.instrument.refine.encroach import check_subsegment
-from cython.cimports.instrument.refine.order import ADVERSARY, RANDOM, priority
+from cython.cimports.instrument.refine.order import ADVERSARY, LARGEST, RANDOM, SMALLEST, priority
 from cython.cimports.instrument.refine.queues import queue_push
 from cython.cimports.instrument.refine.state import Refiner
 
@@ -34,7 +34,7 @@ _INF = cython.declare(cython.double, float("inf"))
 @cython.exceptval(check=False)
 def _shape_scaled(
     bcx: cython.double, bcy: cython.double, cax: cython.double, cay: cython.double, abx: cython.double,
-    aby: cython.double, a: Index, b: Index, c: Index, f: cython.double,
+    aby: cython.double, a: Index, b: Index, c: Index, f: cython.double, circ: cython.bint,
 ) -> tuple[cython.double, cython.double, cython.double, cython.double, Index, Index]:
     """``_shape`` from the edge vectors (b - c, c - a, a - b) scaled by the
     power of two ``f``; the results in the mesh's units."""
@@ -66,7 +66,9 @@ def _shape_scaled(
     if dot < 0.0:
         cos2 = -cos2
     area2: cython.double = aby * cax - abx * cay  # (b - a) x (c - a)
-    circ2: cython.double = la * lb * lc / (area2 * area2) / 4.0 if area2 != 0.0 else _INF
+    circ2: cython.double = 0.0
+    if circ:
+        circ2 = la * lb * lc / (area2 * area2) / 4.0 if area2 != 0.0 else _INF
     g: cython.double = 1.0 / (f * f) if f <= 2.0**511 and f >= 2.0**-511 else 0.0
     if g == 0.0:  # 1/f^2 is no double: scale back in two steps
         return mn / f / f, cos2, area2 / f / f, circ2 / f / f, u, v
@@ -74,11 +76,14 @@ def _shape_scaled(
 
 
 @cython.cfunc
+@cython.inline
 @cython.nogil
 @cython.exceptval(check=False)
-def _shape(m: Mesh, a: Index, b: Index, c: Index) -> tuple[cython.double, cython.double, cython.double, cython.double, Index, Index]:
+def _shape(m: Mesh, a: Index, b: Index, c: Index, circ: cython.bint) -> tuple[cython.double, cython.double, cython.double, cython.double, Index, Index]:
     """Squared shortest edge, cos^2 of the smallest angle, twice the area,
-    squared circumradius, and the shortest edge's end vertices.
+    squared circumradius (only if ``circ``, else 0: a division that only the
+    circumradius orders need, see ``_needs_circumradius``), and the shortest
+    edge's end vertices.
 
     cos^2 is of degree 4 over degree 4 and the circumradius of degree 6 over
     4: with edges beyond about 2^160 or below 2^-160 the products overflow
@@ -95,29 +100,44 @@ def _shape(m: Mesh, a: Index, b: Index, c: Index) -> tuple[cython.double, cython
     aby: cython.double = m.xy[a, 1] - m.xy[b, 1]
     big: cython.double = max(max(max(fabs(bcx), fabs(bcy)), max(fabs(cax), fabs(cay))), max(fabs(abx), fabs(aby)))
     if not (big <= 2.0**160 and big >= 2.0**-160):
-        return _shape_scaled(bcx, bcy, cax, cay, abx, aby, a, b, c, unit_scale(big))
+        return _shape_scaled(bcx, bcy, cax, cay, abx, aby, a, b, c, unit_scale(big), circ)
     la: cython.double = bcx * bcx + bcy * bcy  # opposite a
     lb: cython.double = cax * cax + cay * cay
     lc: cython.double = abx * abx + aby * aby
-    q: Index
     u: Index
     v: Index
     mn: cython.double
     l1: cython.double
     l2: cython.double
-    if lc < la and lc < lb:  # shortest a-b, smallest angle at c
-        q, u, v, mn, l1, l2 = c, a, b, lc, la, lb
-    elif la < lb:
-        q, u, v, mn, l1, l2 = a, b, c, la, lb, lc
-    else:
-        q, u, v, mn, l1, l2 = b, c, a, lb, lc, la
-    dot: cython.double = (m.xy[u, 0] - m.xy[q, 0]) * (m.xy[v, 0] - m.xy[q, 0]) + (m.xy[u, 1] - m.xy[q, 1]) * (m.xy[v, 1] - m.xy[q, 1])
+    dot: cython.double
+    # the dot products of the two edges at the smallest angle, from the edge
+    # vectors (negating is exact: the same roundings as from the coordinates)
+    if lc < la and lc < lb:  # shortest a-b, smallest angle at c: c->a, c->b
+        u, v, mn, l1, l2 = a, b, lc, la, lb
+        dot = -(cax * bcx + cay * bcy)
+    elif la < lb:  # at a: a->b, a->c
+        u, v, mn, l1, l2 = b, c, la, lb, lc
+        dot = -(abx * cax + aby * cay)
+    else:  # at b: b->c, b->a
+        u, v, mn, l1, l2 = c, a, lb, lc, la
+        dot = -(bcx * abx + bcy * aby)
     cos2: cython.double = dot * dot / (l1 * l2)
     if dot < 0.0:  # an obtuse smallest angle cannot happen; keep the sign meaningful
         cos2 = -cos2
-    area2: cython.double = (m.xy[b, 0] - m.xy[a, 0]) * (m.xy[c, 1] - m.xy[a, 1]) - (m.xy[b, 1] - m.xy[a, 1]) * (m.xy[c, 0] - m.xy[a, 0])
-    circ2: cython.double = la * lb * lc / (area2 * area2) / 4.0 if area2 != 0.0 else _INF
+    area2: cython.double = aby * cax - abx * cay  # (b - a) x (c - a)
+    circ2: cython.double = 0.0
+    if circ:
+        circ2 = la * lb * lc / (area2 * area2) / 4.0 if area2 != 0.0 else _INF
     return mn, cos2, area2, circ2, u, v
+
+
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _needs_circumradius(r: Refiner) -> cython.bint:
+    """Only the circumradius orders key the queue on it (order.priority)."""
+    return r.cfg.strategy == LARGEST or r.cfg.strategy == SMALLEST
 
 
 @cython.cfunc
@@ -151,7 +171,6 @@ def _small_input_angle(m: Mesh, segs: Subsegments, u: Index, v: Index) -> cython
     s2: Index = _segment_of(m, v)
     if s1 < 0 or s2 < 0:
         return False
-    xy = m.xy
     a1: Index = segs.ends[s1, 0]
     b1: Index = segs.ends[s1, 1]
     a2: Index = segs.ends[s2, 0]
@@ -165,10 +184,10 @@ def _small_input_angle(m: Mesh, segs: Subsegments, u: Index, v: Index) -> cython
         j = a1
     if j < 0:
         return False
-    ux: cython.double = xy[u, 0] - xy[j, 0]
-    uy: cython.double = xy[u, 1] - xy[j, 1]
-    vx: cython.double = xy[v, 0] - xy[j, 0]
-    vy: cython.double = xy[v, 1] - xy[j, 1]
+    ux: cython.double = m.xy[u, 0] - m.xy[j, 0]
+    uy: cython.double = m.xy[u, 1] - m.xy[j, 1]
+    vx: cython.double = m.xy[v, 0] - m.xy[j, 0]
+    vy: cython.double = m.xy[v, 1] - m.xy[j, 1]
     # squares overflow beyond 2^511 (inf < inf: no exemption) and vanish
     # below 2^-537: out of range, compare the vectors scaled by a power of two
     ux, uy, vx, vy = scaled_pair(ux, uy, vx, vy, 2.0**240)
@@ -183,11 +202,10 @@ def _small_input_angle(m: Mesh, segs: Subsegments, u: Index, v: Index) -> cython
 def builtin_unsuitable(m: Mesh, o: Index, d: Index, a: Index) -> cython.bint:
     """Triangle's sample ``triunsuitable``: the longest edge squared exceeds
     0.05 (x^2 + y^2) + 0.02 at the origin vertex ``o``."""
-    xy = m.xy
-    od: cython.double = (xy[o, 0] - xy[d, 0]) * (xy[o, 0] - xy[d, 0]) + (xy[o, 1] - xy[d, 1]) * (xy[o, 1] - xy[d, 1])
-    da: cython.double = (xy[d, 0] - xy[a, 0]) * (xy[d, 0] - xy[a, 0]) + (xy[d, 1] - xy[a, 1]) * (xy[d, 1] - xy[a, 1])
-    ao: cython.double = (xy[a, 0] - xy[o, 0]) * (xy[a, 0] - xy[o, 0]) + (xy[a, 1] - xy[o, 1]) * (xy[a, 1] - xy[o, 1])
-    return max(od, da, ao) > 0.05 * (xy[o, 0] * xy[o, 0] + xy[o, 1] * xy[o, 1]) + 0.02
+    od: cython.double = (m.xy[o, 0] - m.xy[d, 0]) * (m.xy[o, 0] - m.xy[d, 0]) + (m.xy[o, 1] - m.xy[d, 1]) * (m.xy[o, 1] - m.xy[d, 1])
+    da: cython.double = (m.xy[d, 0] - m.xy[a, 0]) * (m.xy[d, 0] - m.xy[a, 0]) + (m.xy[d, 1] - m.xy[a, 1]) * (m.xy[d, 1] - m.xy[a, 1])
+    ao: cython.double = (m.xy[a, 0] - m.xy[o, 0]) * (m.xy[a, 0] - m.xy[o, 0]) + (m.xy[a, 1] - m.xy[o, 1]) * (m.xy[a, 1] - m.xy[o, 1])
+    return max(od, da, ao) > 0.05 * (m.xy[o, 0] * m.xy[o, 0] + m.xy[o, 1] * m.xy[o, 1]) + 0.02
 
 
 @cython.ccall
@@ -321,6 +339,7 @@ def _would_create(r: Refiner, m: Mesh, t: Index) -> Index:
 
 
 @cython.cfunc
+@cython.inline
 @cython.nogil
 @cython.exceptval(check=False)
 def _queue(r: Refiner, m: Mesh, t: Index, mn: cython.double, cos2: cython.double, circ2: cython.double) -> cython.void:
@@ -350,15 +369,16 @@ def test_triangle(r: Refiner, m: Mesh, segs: Subsegments, t: Index) -> cython.vo
     circ2: cython.double
     u: Index
     v: Index
-    mn, cos2, area2, circ2, u, v = _shape(m, a, b, c)
+    mn, cos2, area2, circ2, u, v = _shape(m, a, b, c, _needs_circumradius(r))
     bad: cython.bint = False
     if r.cfg.fixed_area and 0.5 * area2 > r.cfg.max_area:
         bad = True
     bound: cython.double
     attr: cython.double
-    bound, attr = inherited(m, t)
-    if not bad and r.cfg.regional_area and bound > 0.0 and 0.5 * area2 > bound:
-        bad = True
+    if not bad and r.cfg.regional_area:
+        bound, attr = inherited(m, t)
+        if bound > 0.0 and 0.5 * area2 > bound:
+            bad = True
     if not bad and r.cfg.builtin_user and builtin_unsuitable(m, b, c, a):  # handle 3 t: org, dest, apex
         bad = True
     k: Index
@@ -392,7 +412,7 @@ def queue_triangles(r: Refiner, m: Mesh, ts: cython.longlong[::1]) -> cython.voi
     for i in range(ts.shape[0]):
         t = ts[i]
         if m.stamp[t] > 0:
-            mn, cos2, area2, circ2, u, v = _shape(m, m.corner[3 * t], m.corner[3 * t + 1], m.corner[3 * t + 2])
+            mn, cos2, area2, circ2, u, v = _shape(m, m.corner[3 * t], m.corner[3 * t + 1], m.corner[3 * t + 2], _needs_circumradius(r))
             _queue(r, m, t, mn, cos2, circ2)
 
 

@@ -258,7 +258,6 @@ def chew_delete(r: Refiner, m: Mesh, segs: Subsegments, e: Index) -> cython.bint
     False if there was no room (nothing changed on that side)."""
     u: Index = m.corner[lnext(e)]
     v: Index = m.corner[lprev(e)]
-    xy = m.xy
     f: Index
     o: Index
     d: Index
@@ -280,7 +279,7 @@ def chew_delete(r: Refiner, m: Mesh, segs: Subsegments, e: Index) -> cython.bint
             a = m.corner[f]
             if m.vtype[a] != V_FREE:
                 break
-            dot = scaled_dot(xy[o, 0] - xy[a, 0], xy[o, 1] - xy[a, 1], xy[d, 0] - xy[a, 0], xy[d, 1] - xy[a, 1])
+            dot = scaled_dot(m.xy[o, 0] - m.xy[a, 0], m.xy[o, 1] - m.xy[a, 1], m.xy[d, 0] - m.xy[a, 0], m.xy[d, 1] - m.xy[a, 1])
             if dot >= 0.0:
                 break
             if queue_used(r) + 64 > r.hkey.shape[0]:

@@ -64,64 +64,52 @@ def enc_edge(r: Refiner, m: Mesh, i: Index) -> Index:
     return e
 
 
-@cython.ccall
-@cython.nogil
-@cython.exceptval(check=False)
-def in_lens(r: Refiner, m: Mesh, e0: Index, e1: Index, ax: cython.double, ay: cython.double) -> cython.bint:
-    """Does the point (ax, ay) lie in the diametral lens (or circle with -D)
-    of ``e0 e1``?"""
-    xy = m.xy
-    ux: cython.double = xy[e0, 0] - ax
-    uy: cython.double = xy[e0, 1] - ay
-    vx: cython.double = xy[e1, 0] - ax
-    vy: cython.double = xy[e1, 1] - ay
-    # the lens test is of degree 4: beyond 2^+-120 it over- or underflows
-    # (at 2^300 both sides were infinite and every apex encroached; at 1e301
-    # a dot product was inf - inf = NaN, taken as encroaching: 3 points under
-    # D made 6306 vertices where the same points at 1e150 make 10); there the
-    # vectors are scaled by a power of two, which changes no result
-    ux, uy, vx, vy = scaled_pair(ux, uy, vx, vy, 2.0**120)
-    dot: cython.double = ux * vx + uy * vy
-    if dot >= 0.0:
-        return False
-    if r.cfg.diametral:
-        return True
-    return dot * dot >= r.cfg.lens * (ux * ux + uy * uy) * (vx * vx + vy * vy)
+# The tests every new subsegment side and rim edge takes: compiled,
+# encroach.pxd's inline definitions; the same functions for the pure-Python mode.
+if not cython.compiled:
 
+    def may_split(r: Refiner, m: Mesh, e: Index) -> bool:
+        """-Y keeps boundary subsegments whole, -YY every subsegment."""
+        y = r.cfg.keep_segments
+        return y == 0 or (y == 1 and m.twin[e] != NO_EDGE)
 
-@cython.ccall
-@cython.nogil
-@cython.exceptval(check=False)
-def may_split(r: Refiner, m: Mesh, e: Index) -> cython.bint:
-    """-Y keeps boundary subsegments whole, -YY every subsegment."""
-    y: cython.int = r.cfg.keep_segments
-    return y == 0 or (y == 1 and m.twin[e] != NO_EDGE)
+    def queue_side(r: Refiner, m: Mesh, e: Index, hit: bool) -> bool:
+        """Pool subsegment edge ``e`` (whose own apex encroaches if ``hit``) on
+        an encroaching side: the other side if its apex encroaches, as Triangle
+        orients its records, since the side decides where shells are measured
+        from.  Returns whether it is encroached."""
+        tw = m.twin[e]
+        if tw != NO_EDGE:
+            b = m.corner[tw]
+            if in_lens(r, m, m.corner[lnext(e)], m.corner[lprev(e)], m.xy[b, 0], m.xy[b, 1]):
+                e = tw
+                hit = True
+        if hit and may_split(r, m, e):
+            enc_push(r, m, e)
+        return hit
 
+    def check_subsegment(r: Refiner, m: Mesh, e: Index) -> bool:
+        """Pool subsegment edge ``e`` if an apex on either side encroaches it."""
+        a = m.corner[e]
+        return queue_side(r, m, e, in_lens(r, m, m.corner[lnext(e)], m.corner[lprev(e)], m.xy[a, 0], m.xy[a, 1]))
 
-@cython.ccall
-@cython.nogil
-@cython.exceptval(check=False)
-def queue_side(r: Refiner, m: Mesh, e: Index, hit: cython.bint) -> cython.bint:
-    """Pool subsegment edge ``e`` (whose own apex encroaches if ``hit``) on
-    an encroaching side: the other side if its apex encroaches, as Triangle
-    orients its records, since the side decides where shells are measured
-    from.  Returns whether it is encroached."""
-    tw: Index = m.twin[e]
-    b: Index
-    if tw != NO_EDGE:
-        b = m.corner[tw]
-        if in_lens(r, m, m.corner[lnext(e)], m.corner[lprev(e)], m.xy[b, 0], m.xy[b, 1]):
-            e = tw
-            hit = True
-    if hit and may_split(r, m, e):
-        enc_push(r, m, e)
-    return hit
-
-
-@cython.ccall
-@cython.nogil
-@cython.exceptval(check=False)
-def check_subsegment(r: Refiner, m: Mesh, e: Index) -> cython.bint:
-    """Pool subsegment edge ``e`` if an apex on either side encroaches it."""
-    a: Index = m.corner[e]
-    return queue_side(r, m, e, in_lens(r, m, m.corner[lnext(e)], m.corner[lprev(e)], m.xy[a, 0], m.xy[a, 1]))
+    def in_lens(r: Refiner, m: Mesh, e0: Index, e1: Index, ax: float, ay: float) -> bool:
+        """Does the point (ax, ay) lie in the diametral lens (or circle with -D)
+        of ``e0 e1``?"""
+        xy = m.xy
+        ux = xy[e0, 0] - ax
+        uy = xy[e0, 1] - ay
+        vx = xy[e1, 0] - ax
+        vy = xy[e1, 1] - ay
+        # the lens test is of degree 4: beyond 2^+-120 it over- or underflows
+        # (at 2^300 both sides were infinite and every apex encroached; at 1e301
+        # a dot product was inf - inf = NaN, taken as encroaching: 3 points under
+        # D made 6306 vertices where the same points at 1e150 make 10); there the
+        # vectors are scaled by a power of two, which changes no result
+        ux, uy, vx, vy = scaled_pair(ux, uy, vx, vy, 2.0**120)
+        dot = ux * vx + uy * vy
+        if dot >= 0.0:
+            return False
+        if r.cfg.diametral:
+            return True
+        return dot * dot >= r.cfg.lens * (ux * ux + uy * uy) * (vx * vx + vy * vy)

@@ -16,9 +16,8 @@ from __future__ import annotations
 import math
 
 import cython
-from cython.cimports.libc.math import frexp, sqrt
 
-_DBL_MAX = cython.declare(cython.double, 1.7976931348623157e308)
+_DBL_MAX = 1.7976931348623157e308
 
 if not cython.compiled:  # compiled, these are order.pxd's enum
     TRIANGLE, WORST_ANGLE, FIFO, LIFO, RANDOM, LARGEST, SMALLEST, ADVERSARY = range(8)
@@ -48,71 +47,50 @@ def strategy_id(name: str) -> int:
         raise ValueError(f"unknown strategy {name!r}; choose one of {', '.join(_DESCRIPTIONS)}") from None
 
 
-@cython.cfunc
-@cython.inline
-@cython.nogil
-@cython.exceptval(check=False)
-def _frexp(x: cython.double) -> tuple[cython.double, cython.int]:
-    """x = mant * 2**ex with mant in [0.5, 1), for finite x > 0."""
-    if cython.compiled:
-        ex: cython.int = 0
-        mant: cython.double = frexp(x, cython.address(ex))
-        return mant, ex
-    else:
-        return math.frexp(x)
+# The keys: compiled, order.pxd's inline definitions (every queued triangle
+# needs one); the same functions for the pure-Python mode.
+if not cython.compiled:
 
+    def triangle_bucket(key: float) -> int:
+        """Triangle's bucket (0..4095) for a squared shortest edge ``key``.
 
-@cython.ccall
-@cython.nogil
-@cython.exceptval(check=False)
-def triangle_bucket(key: cython.double) -> cython.int:
-    """Triangle's bucket (0..4095) for a squared shortest edge ``key``.
+        ``L = key`` or ``1 / key``, whichever is at least 1, written ``2^e f`` with
+        ``f`` in (1, 2]; ``x = 2e + [f > sqrt 2]``; bucket ``2047 - x`` for
+        ``key >= 1`` and ``2048 + x`` below.  Higher buckets are served first.
+        """
+        if key <= 0.0 or key != key:
+            return 4095
+        big = key >= 1.0
+        length = key if big else 1.0 / key
+        if not length <= _DBL_MAX:  # infinite
+            return 0 if big else 4095
+        # frexp: length = mant * 2**ex with mant in [0.5, 1); shift to f in (1, 2]
+        mant, ex = math.frexp(length)
+        f = 2.0 * mant
+        e = ex - 1
+        if f == 1.0 and e > 0:  # exact power of two: f = 2, one exponent lower
+            f = 2.0
+            e -= 1
+        x = 2 * e + (1 if f > math.sqrt(2.0) else 0)
+        if x > 2047:
+            x = 2047
+        return 2047 - x if big else 2048 + x
 
-    ``L = key`` or ``1 / key``, whichever is at least 1, written ``2^e f`` with
-    ``f`` in (1, 2]; ``x = 2e + [f > sqrt 2]``; bucket ``2047 - x`` for
-    ``key >= 1`` and ``2048 + x`` below.  Higher buckets are served first.
-    """
-    if key <= 0.0 or key != key:
-        return 4095
-    big: cython.bint = key >= 1.0
-    length: cython.double = key if big else 1.0 / key
-    if not length <= _DBL_MAX:  # infinite
-        return 0 if big else 4095
-    # frexp: length = mant * 2**ex with mant in [0.5, 1); shift to f in (1, 2]
-    mant: cython.double
-    ex: cython.int
-    mant, ex = _frexp(length)
-    f: cython.double = 2.0 * mant
-    e: cython.int = ex - 1
-    if f == 1.0 and e > 0:  # exact power of two: f = 2, one exponent lower
-        f = 2.0
-        e -= 1
-    x: cython.int = 2 * e + (1 if f > sqrt(2.0) else 0)
-    if x > 2047:
-        x = 2047
-    return 2047 - x if big else 2048 + x
-
-
-@cython.ccall
-@cython.nogil
-@cython.exceptval(check=False)
-def priority(
-    strategy: cython.int, min_edge2: cython.double, cos2_min_angle: cython.double, circumradius2: cython.double,
-    created_estimate: cython.longlong, seq: cython.longlong, rnd: cython.double,
-) -> cython.double:
-    """The queue key of a bad triangle (smaller first); ``seq`` breaks ties."""
-    if strategy == TRIANGLE:
-        return -cython.cast(cython.double, triangle_bucket(min_edge2))
-    if strategy == WORST_ANGLE:
-        return -cos2_min_angle
-    if strategy == FIFO:
-        return 0.0
-    if strategy == LIFO:
-        return -cython.cast(cython.double, seq)
-    if strategy == RANDOM:
-        return rnd
-    if strategy == LARGEST:
-        return -circumradius2
-    if strategy == SMALLEST:
-        return circumradius2
-    return -cython.cast(cython.double, created_estimate)  # ADVERSARY
+    def priority(strategy: int, min_edge2: float, cos2_min_angle: float, circumradius2: float,
+                 created_estimate: int, seq: int, rnd: float) -> float:
+        """The queue key of a bad triangle (smaller first); ``seq`` breaks ties."""
+        if strategy == TRIANGLE:
+            return -float(triangle_bucket(min_edge2))
+        if strategy == WORST_ANGLE:
+            return -cos2_min_angle
+        if strategy == FIFO:
+            return 0.0
+        if strategy == LIFO:
+            return -float(seq)
+        if strategy == RANDOM:
+            return rnd
+        if strategy == LARGEST:
+            return -circumradius2
+        if strategy == SMALLEST:
+            return circumradius2
+        return -float(created_estimate)  # ADVERSARY

@@ -1,9 +1,78 @@
 # The bad-triangle queue (queues.py).
 from instrument.core.mesh cimport Index, Mesh
+from instrument.refine.order cimport TRIANGLE
 from instrument.refine.state cimport Refiner
 
-cpdef Index queue_used(Refiner r) noexcept nogil
 cpdef void queue_clear(Refiner r) noexcept nogil
-cpdef void queue_push(Refiner r, double key, Index t, long long stamp) noexcept nogil
 cpdef Index queue_pop(Refiner r) noexcept nogil
 cpdef void queue_compact(Refiner r, Mesh m) noexcept nogil
+
+
+# Defined here so that the kernels inline them (every bad triangle is
+# pushed, every step checks the room); queues.py repeats them for the
+# pure-Python mode.
+
+cdef inline bint _bucketed(Refiner r) noexcept nogil:
+    return r.cfg.strategy == TRIANGLE
+
+
+cdef inline bint _heap_less(Refiner r, Index i, Index j) noexcept nogil:
+    if r.hkey[i] != r.hkey[j]:
+        return r.hkey[i] < r.hkey[j]
+    return r.hseq[i] < r.hseq[j]
+
+
+cdef inline void _heap_swap(Refiner r, Index i, Index j) noexcept nogil:
+    r.hkey[i], r.hkey[j] = r.hkey[j], r.hkey[i]
+    r.hseq[i], r.hseq[j] = r.hseq[j], r.hseq[i]
+    r.htri[i], r.htri[j] = r.htri[j], r.htri[i]
+    r.hstamp[i], r.hstamp[j] = r.hstamp[j], r.hstamp[i]
+
+
+cdef inline void _bucket_append(Refiner r, Index i) noexcept nogil:
+    # link entry i at the tail of its bucket (key = -bucket)
+    cdef Index b = <Index>(-r.hkey[i])
+    r.hseq[i] = -1
+    cdef Index tail = r.bucket[1, b]
+    if tail >= 0:
+        r.hseq[tail] = i
+    else:
+        r.bucket[0, b] = i
+    r.bucket[1, b] = i
+    if b > r.top_bucket:
+        r.top_bucket = b
+
+
+cpdef inline void queue_push(Refiner r, double key, Index t, long long stamp) noexcept nogil:
+    # queue triangle t (the caller made sure there is room)
+    cdef Index i
+    cdef Index up
+    if _bucketed(r):
+        i = r.log_length
+        r.log_length = i + 1
+        r.hsize += 1
+        r.seq += 1
+        r.hkey[i] = key
+        r.htri[i] = <int>t
+        r.hstamp[i] = <int>stamp
+        _bucket_append(r, i)
+        return
+    i = r.hsize
+    r.hsize = i + 1
+    r.hkey[i] = key
+    r.hseq[i] = r.seq
+    r.seq += 1
+    r.htri[i] = <int>t
+    r.hstamp[i] = <int>stamp
+    while i > 0:
+        up = (i - 1) // 2
+        if not _heap_less(r, i, up):
+            break
+        _heap_swap(r, i, up)
+        i = up
+
+
+cpdef inline Index queue_used(Refiner r) noexcept nogil:
+    # queue entries in use: the heap's size, or the bucket log's length
+    # (served and stale entries included, until a compaction)
+    return r.log_length if r.cfg.strategy == TRIANGLE else r.hsize

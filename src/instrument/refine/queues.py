@@ -28,23 +28,6 @@ from cython.cimports.instrument.refine.state import Refiner
 POPPED = cython.declare(cython.longlong, -2)
 
 
-@cython.cfunc
-@cython.inline
-@cython.nogil
-@cython.exceptval(check=False)
-def _bucketed(r: Refiner) -> cython.bint:
-    return r.cfg.strategy == TRIANGLE
-
-
-@cython.ccall
-@cython.nogil
-@cython.exceptval(check=False)
-def queue_used(r: Refiner) -> Index:
-    """Queue entries in use: the heap's size, or the bucket log's length
-    (served and stale entries included, until a compaction)."""
-    return r.log_length if _bucketed(r) else r.hsize
-
-
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
@@ -56,77 +39,6 @@ def queue_clear(r: Refiner) -> cython.void:
     for k in range(r.bucket.shape[1]):
         r.bucket[0, k] = -1
         r.bucket[1, k] = -1
-
-
-@cython.cfunc
-@cython.inline
-@cython.nogil
-@cython.exceptval(check=False)
-def _heap_less(r: Refiner, i: Index, j: Index) -> cython.bint:
-    if r.hkey[i] != r.hkey[j]:
-        return r.hkey[i] < r.hkey[j]
-    return r.hseq[i] < r.hseq[j]
-
-
-@cython.cfunc
-@cython.inline
-@cython.nogil
-@cython.exceptval(check=False)
-def _heap_swap(r: Refiner, i: Index, j: Index) -> cython.void:
-    r.hkey[i], r.hkey[j] = r.hkey[j], r.hkey[i]
-    r.hseq[i], r.hseq[j] = r.hseq[j], r.hseq[i]
-    r.htri[i], r.htri[j] = r.htri[j], r.htri[i]
-    r.hstamp[i], r.hstamp[j] = r.hstamp[j], r.hstamp[i]
-
-
-@cython.cfunc
-@cython.inline
-@cython.nogil
-@cython.exceptval(check=False)
-def _bucket_append(r: Refiner, i: Index) -> cython.void:
-    """Link entry ``i`` at the tail of its bucket (key = -bucket)."""
-    b: Index = cython.cast(Index, -r.hkey[i])
-    r.hseq[i] = -1
-    tail: Index = r.bucket[1, b]
-    if tail >= 0:
-        r.hseq[tail] = i
-    else:
-        r.bucket[0, b] = i
-    r.bucket[1, b] = i
-    if b > r.top_bucket:
-        r.top_bucket = b
-
-
-@cython.ccall
-@cython.nogil
-@cython.exceptval(check=False)
-def queue_push(r: Refiner, key: cython.double, t: Index, stamp: cython.longlong) -> cython.void:
-    """Queue triangle ``t`` (the caller made sure there is room)."""
-    i: Index
-    up: Index
-    if _bucketed(r):
-        i = r.log_length
-        r.log_length = i + 1
-        r.hsize += 1
-        r.seq += 1
-        r.hkey[i] = key
-        r.htri[i] = cython.cast(cython.int, t)
-        r.hstamp[i] = cython.cast(cython.int, stamp)
-        _bucket_append(r, i)
-        return
-    i = r.hsize
-    r.hsize = i + 1
-    r.hkey[i] = key
-    r.hseq[i] = r.seq
-    r.seq += 1
-    r.htri[i] = cython.cast(cython.int, t)
-    r.hstamp[i] = cython.cast(cython.int, stamp)
-    while i > 0:
-        up = (i - 1) // 2
-        if not _heap_less(r, i, up):
-            break
-        _heap_swap(r, i, up)
-        i = up
 
 
 @cython.cfunc
@@ -210,3 +122,67 @@ def queue_compact(r: Refiner, m: Mesh) -> cython.void:
     r.hsize = n
     for i in range(n // 2 - 1, -1, -1):
         _sift_down(r, i, n)
+
+
+# Pushing, and the room check: compiled, queues.pxd's inline definitions
+# (every bad triangle is pushed, every step checks the room); the same
+# functions for the pure-Python mode.
+if not cython.compiled:
+
+    def _bucketed(r: Refiner) -> bool:
+        return r.cfg.strategy == TRIANGLE
+
+    def _heap_less(r: Refiner, i: Index, j: Index) -> bool:
+        if r.hkey[i] != r.hkey[j]:
+            return r.hkey[i] < r.hkey[j]
+        return r.hseq[i] < r.hseq[j]
+
+    def _heap_swap(r: Refiner, i: Index, j: Index) -> None:
+        r.hkey[i], r.hkey[j] = r.hkey[j], r.hkey[i]
+        r.hseq[i], r.hseq[j] = r.hseq[j], r.hseq[i]
+        r.htri[i], r.htri[j] = r.htri[j], r.htri[i]
+        r.hstamp[i], r.hstamp[j] = r.hstamp[j], r.hstamp[i]
+
+    def _bucket_append(r: Refiner, i: Index) -> None:
+        """Link entry ``i`` at the tail of its bucket (key = -bucket)."""
+        b = int(-r.hkey[i])
+        r.hseq[i] = -1
+        tail = r.bucket[1, b]
+        if tail >= 0:
+            r.hseq[tail] = i
+        else:
+            r.bucket[0, b] = i
+        r.bucket[1, b] = i
+        if b > r.top_bucket:
+            r.top_bucket = b
+
+    def queue_push(r: Refiner, key: float, t: Index, stamp: int) -> None:
+        """Queue triangle ``t`` (the caller made sure there is room)."""
+        if _bucketed(r):
+            i = r.log_length
+            r.log_length = i + 1
+            r.hsize += 1
+            r.seq += 1
+            r.hkey[i] = key
+            r.htri[i] = t
+            r.hstamp[i] = stamp
+            _bucket_append(r, i)
+            return
+        i = r.hsize
+        r.hsize = i + 1
+        r.hkey[i] = key
+        r.hseq[i] = r.seq
+        r.seq += 1
+        r.htri[i] = t
+        r.hstamp[i] = stamp
+        while i > 0:
+            up = (i - 1) // 2
+            if not _heap_less(r, i, up):
+                break
+            _heap_swap(r, i, up)
+            i = up
+
+    def queue_used(r: Refiner) -> Index:
+        """Queue entries in use: the heap's size, or the bucket log's length
+        (served and stale entries included, until a compaction)."""
+        return r.log_length if _bucketed(r) else r.hsize

@@ -125,18 +125,22 @@ def _on_segment_points(
 @cython.exceptval(check=False)
 def _on_subsegment(m: Mesh, a: Index, b: Index, c: Index) -> cython.bint:
     """Does vertex ``c`` lie on the segment ``a b`` up to rounding, between its ends?"""
-    xy = m.xy
     # squares overflow beyond 2^511 (every vertex lay on every subsegment)
     # and vanish below 2^-537: out of range, the test runs on the points
     # scaled by a power of two (exact upward; downward only bits below
     # 2^-1000 of the extent go); in range f is 1, which changes nothing
-    big: cython.double = max(max(fabs(xy[b, 0] - xy[a, 0]), fabs(xy[b, 1] - xy[a, 1])),
-                             max(fabs(xy[c, 0] - xy[a, 0]), fabs(xy[c, 1] - xy[a, 1])))
+    big: cython.double = max(max(fabs(m.xy[b, 0] - m.xy[a, 0]), fabs(m.xy[b, 1] - m.xy[a, 1])),
+                             max(fabs(m.xy[c, 0] - m.xy[a, 0]), fabs(m.xy[c, 1] - m.xy[a, 1])))
     f: cython.double = 1.0
     if not (big <= 2.0**240 and big >= 2.0**-240) and big > 0.0:
         f = unit_scale(big)
-    if not _on_segment_points(xy[a, 0] * f, xy[a, 1] * f, xy[b, 0] * f, xy[b, 1] * f, xy[c, 0] * f, xy[c, 1] * f,
-                              HALF_ULP):
+    ax: cython.double = m.xy[a, 0] * f
+    ay: cython.double = m.xy[a, 1] * f
+    bx: cython.double = m.xy[b, 0] * f
+    by: cython.double = m.xy[b, 1] * f
+    cx: cython.double = m.xy[c, 0] * f
+    cy: cython.double = m.xy[c, 1] * f
+    if not _on_segment_points(ax, ay, bx, by, cx, cy, HALF_ULP):
         return False
     # Half an ulp of the largest coordinate is far more than rounding on the
     # other axis at mixed scales: beside a segment x = 2.2e-278 running up to
@@ -149,7 +153,7 @@ def _on_subsegment(m: Mesh, a: Index, b: Index, c: Index) -> cython.bint:
     e0: Index = vertex_edge(m, c)
     if e0 < 0 or edge_around(m, e0, -1) < 0:
         return True
-    return _on_segment_points(xy[a, 0] * f, xy[a, 1] * f, xy[b, 0] * f, xy[b, 1] * f, xy[c, 0] * f, xy[c, 1] * f, 0.0)
+    return _on_segment_points(ax, ay, bx, by, cx, cy, 0.0)
 
 
 @cython.cfunc
@@ -162,7 +166,6 @@ def _split_at_apex(r: Refiner, m: Mesh, segs: Subsegments, e: Index, f: Index, t
     other side, flipping ``o d`` to ``c y``; without one, deleting the
     sliver), and ``c o`` and ``c d`` become the two halves, as a split's
     would.  No vertex is made.  Returns DONE, NEED_ROOM or PRECISION."""
-    xy = m.xy
     o: Index = m.corner[lnext(e)]
     d: Index = m.corner[lprev(e)]
     c: Index = m.corner[f]
@@ -178,8 +181,8 @@ def _split_at_apex(r: Refiner, m: Mesh, segs: Subsegments, e: Index, f: Index, t
         w = m.corner[lprev(f)]
         y = m.corner[g]
         bad = not (
-            orient2d(xy[c, 0], xy[c, 1], xy[u, 0], xy[u, 1], xy[y, 0], xy[y, 1]) > 0.0
-            and orient2d(xy[c, 0], xy[c, 1], xy[y, 0], xy[y, 1], xy[w, 0], xy[w, 1]) > 0.0
+            orient2d(m.xy[c, 0], m.xy[c, 1], m.xy[u, 0], m.xy[u, 1], m.xy[y, 0], m.xy[y, 1]) > 0.0
+            and orient2d(m.xy[c, 0], m.xy[c, 1], m.xy[y, 0], m.xy[y, 1], m.xy[w, 0], m.xy[w, 1]) > 0.0
         )
     if bad:  # nothing to split at: Triangle's error
         r.error_org = o
@@ -267,7 +270,6 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
     ``e`` as it was before Chew's deletions, -1: as it is now).  Returns
     DONE, NEED_ROOM (nothing changed) or PRECISION."""
     step_begins(r, m.work)
-    xy = m.xy
     o: Index = m.corner[lnext(e)]
     d: Index = m.corner[lprev(e)]
     tw: Index = m.twin[e]
@@ -281,8 +283,8 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
     e1: Index = o
     acute0: cython.bint = acute_dest
     acute1: cython.bint = acute_org
-    ex: cython.double = xy[e1, 0] - xy[e0, 0]
-    ey: cython.double = xy[e1, 1] - xy[e0, 1]
+    ex: cython.double = m.xy[e1, 0] - m.xy[e0, 0]
+    ey: cython.double = m.xy[e1, 1] - m.xy[e0, 1]
     split: cython.double = 0.5
     length: cython.double
     p2: cython.double
@@ -307,18 +309,18 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
         split = p2 / length
         if acute1:
             split = 1.0 - split
-    px: cython.double = xy[e0, 0] + split * ex
-    py: cython.double = xy[e0, 1] + split * ey
+    px: cython.double = m.xy[e0, 0] + split * ex
+    py: cython.double = m.xy[e0, 1] + split * ey
     # one correction toward the segment's line (not out of range, where the
     # squared length is subnormal or infinite and orient2d's value saturates:
     # at 1e-162 their quotient moved the point onto an end)
     den: cython.double = ex * ex + ey * ey
-    mult: cython.double = orient2d(xy[e0, 0], xy[e0, 1], xy[e1, 0], xy[e1, 1], px, py) / den
+    mult: cython.double = orient2d(m.xy[e0, 0], m.xy[e0, 1], m.xy[e1, 0], m.xy[e1, 1], px, py) / den
     big = max(fabs(ex), fabs(ey))
     if mult != 0.0 and den != 0.0 and mult == mult and big <= 2.0**480 and big >= 2.0**-480:
         px += mult * ey
         py += mult * -ex
-    if (px == xy[o, 0] and py == xy[o, 1]) or (px == xy[d, 0] and py == xy[d, 1]):
+    if (px == m.xy[o, 0] and py == m.xy[o, 1]) or (px == m.xy[d, 0] and py == m.xy[d, 1]):
         r.error_org = o
         r.error_dest = d
         return PRECISION
@@ -352,7 +354,7 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
     for j in range(nb):
         u = r.bnd[j, 1]
         w = r.bnd[j, 2]
-        if orient2d(px, py, xy[u, 0], xy[u, 1], xy[w, 0], xy[w, 1]) <= 0.0:
+        if orient2d(px, py, m.xy[u, 0], m.xy[u, 1], m.xy[w, 0], m.xy[w, 1]) <= 0.0:
             forget_cavity(r, m, n)
             if u == apex_e or w == apex_e:
                 return _split_at_apex(r, m, segs, e, e, triangles)
@@ -454,7 +456,6 @@ def _start_edge(m: Mesh, h: Index, px: cython.double, py: cython.double) -> tupl
     """Where a walk to (px, py) from handle ``h``'s triangle starts, by
     exact orientations: (an edge the point is left of, LOC_FAILED, -1), or
     (-, LOC_BLOCKED, the subsegment or boundary edge the point is across)."""
-    xy = m.xy
     k: Index = h
     o: Index
     d: Index
@@ -463,7 +464,7 @@ def _start_edge(m: Mesh, h: Index, px: cython.double, py: cython.double) -> tupl
         o = m.corner[lnext(k)]
         d = m.corner[lprev(k)]
         m.work[C_ORIENT] += 1
-        if orient2d(xy[o, 0], xy[o, 1], xy[d, 0], xy[d, 1], px, py) < 0.0:
+        if orient2d(m.xy[o, 0], m.xy[o, 1], m.xy[d, 0], m.xy[d, 1], px, py) < 0.0:
             tw = m.twin[k]
             if m.seg[k] != NO_SEG or tw == NO_EDGE or is_ghost(m, tw // 3):
                 return h, LOC_BLOCKED, k
@@ -500,16 +501,15 @@ def _collapsed(m: Mesh, h: Index, px: cython.double, py: cython.double) -> Index
     itself, and the split leaves two triangles of the same shape, forever.
     Edges are compared as scaled vectors (powers of two), so that squares
     neither overflow nor vanish beside the triangle's longest edge."""
-    xy = m.xy
     a: Index = m.corner[h]  # apex
     b: Index = m.corner[lnext(h)]  # org
     c: Index = m.corner[lprev(h)]  # dest
-    bcx: cython.double = xy[c, 0] - xy[b, 0]
-    bcy: cython.double = xy[c, 1] - xy[b, 1]
-    cax: cython.double = xy[a, 0] - xy[c, 0]
-    cay: cython.double = xy[a, 1] - xy[c, 1]
-    abx: cython.double = xy[b, 0] - xy[a, 0]
-    aby: cython.double = xy[b, 1] - xy[a, 1]
+    bcx: cython.double = m.xy[c, 0] - m.xy[b, 0]
+    bcy: cython.double = m.xy[c, 1] - m.xy[b, 1]
+    cax: cython.double = m.xy[a, 0] - m.xy[c, 0]
+    cay: cython.double = m.xy[a, 1] - m.xy[c, 1]
+    abx: cython.double = m.xy[b, 0] - m.xy[a, 0]
+    aby: cython.double = m.xy[b, 1] - m.xy[a, 1]
     f: cython.double = unit_scale(max(max(max(fabs(bcx), fabs(bcy)), max(fabs(cax), fabs(cay))), max(fabs(abx), fabs(aby))))
     la: cython.double = (bcx * f) * (bcx * f) + (bcy * f) * (bcy * f)  # opposite a: edge h
     lb: cython.double = (cax * f) * (cax * f) + (cay * f) * (cay * f)  # opposite b: edge lnext(h)
@@ -521,7 +521,7 @@ def _collapsed(m: Mesh, h: Index, px: cython.double, py: cython.double) -> Index
         edge = lprev(h)
     u: Index = m.corner[lnext(edge)]
     v: Index = m.corner[lprev(edge)]
-    if orient2d(xy[u, 0], xy[u, 1], xy[v, 0], xy[v, 1], px, py) > 0.0:
+    if orient2d(m.xy[u, 0], m.xy[u, 1], m.xy[v, 0], m.xy[v, 1], px, py) > 0.0:
         return -1
     return edge
 
@@ -537,7 +537,6 @@ def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cyth
     unsplit.  Returns DONE, NEED_ROOM (nothing changed) or PRECISION (the
     point rounded onto the triangle's shortest edge: see _collapsed)."""
     step_begins(r, m.work)
-    xy = m.xy
     t: Index = h // 3
     px: cython.double
     py: cython.double
@@ -551,9 +550,9 @@ def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cyth
     c: Index = m.corner[lprev(h)]  # dest
     if (
         px != px or py != py  # NaN
-        or (px == xy[a, 0] and py == xy[a, 1])
-        or (px == xy[b, 0] and py == xy[b, 1])
-        or (px == xy[c, 0] and py == xy[c, 1])
+        or (px == m.xy[a, 0] and py == m.xy[a, 1])
+        or (px == m.xy[b, 0] and py == m.xy[b, 1])
+        or (px == m.xy[c, 0] and py == m.xy[c, 1])
     ):
         m.work[C_DUPLICATE] += 1
         return DONE
@@ -620,10 +619,12 @@ def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cyth
     order_rim(r, m, nb, m.corner[lprev(e)] if status == LOC_ON_EDGE else m.corner[lnext(e)])
     # a point inside a subsegment's lens is rejected; the subsegment is split
     encroached: Index = 0
-    for j in range(nb):
-        if r.bnd[j, 3] != NO_SEG and in_lens(r, m, r.bnd[j, 1], r.bnd[j, 2], px, py):
+    k: Index
+    for j in range(nb):  # in the rim's order
+        k = r.fan[j]
+        if r.bnd[k, 3] != NO_SEG and in_lens(r, m, r.bnd[k, 1], r.bnd[k, 2], px, py):
             encroached += 1
-            queue_side(r, m, r.bnd[j, 4], True)
+            queue_side(r, m, r.bnd[k, 4], True)
     if encroached:
         forget_cavity(r, m, n)
         m.work[C_REJECTED] += 1
@@ -754,7 +755,6 @@ def first_side(m: Mesh, segs: Subsegments, first: cython.longlong[::1]) -> cytho
     """``first[rec]``: one side of each live subsegment record, the lowest
     edge number among its sides that run along the record's ends (the edge
     it was made on) or have no twin (the only side); -1 if none."""
-    xy = m.xy
     t: Index
     k: Index
     rec: Index
@@ -773,6 +773,6 @@ def first_side(m: Mesh, segs: Subsegments, first: cython.longlong[::1]) -> cytho
         dest = m.corner[3 * t + (k + 2) % 3]
         a = segs.ends[rec, 0]
         b = segs.ends[rec, 1]
-        along = (xy[dest, 0] - xy[org, 0]) * (xy[b, 0] - xy[a, 0]) + (xy[dest, 1] - xy[org, 1]) * (xy[b, 1] - xy[a, 1]) > 0.0
+        along = (m.xy[dest, 0] - m.xy[org, 0]) * (m.xy[b, 0] - m.xy[a, 0]) + (m.xy[dest, 1] - m.xy[org, 1]) * (m.xy[b, 1] - m.xy[a, 1]) > 0.0
         if along or m.twin[e] == NO_EDGE:
             first[rec] = e

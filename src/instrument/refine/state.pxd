@@ -58,7 +58,7 @@ cdef class Refiner:
     cdef public int acute            # its ends next to another subsegment as it was pooled: 1 org, 2 dest
     # scratch of one insertion (cavity.py)
     cdef public long long[::1] cav   # cavity triangles (and, from the end, those tested outside)
-    cdef public long long[::1] fan   # the triangles an insertion made
+    cdef public long long[::1] fan   # the rim's rows in order (cavity.order_rim), then the triangles an insertion made
     cdef public long long[:, ::1] bnd  # cavity rim edges: (outer twin, org, dest, record, edge)
     cdef public double[:, ::1] bval  # and the area bound and attribute each passes on
     cdef public double[::1] carry    # the area bound each cavity triangle passes on (cavity.py)
@@ -66,7 +66,37 @@ cdef class Refiner:
     cdef public long long[:, ::1] trace  # rows: kind, created, deleted, walk steps, queue length
     cdef public Index ntrace
 
-cpdef void step_begins(Refiner r, long long[::1] work) noexcept nogil
-cpdef void step_undone(Refiner r, long long[::1] work) noexcept nogil
-cpdef bint trace_full(Refiner r) noexcept nogil
-cpdef void trace_row(Refiner r, long long kind, long long created, long long deleted, long long steps, long long queue) noexcept nogil
+# Defined here so that the kernels inline them (every step calls them);
+# state.py repeats them for the pure-Python mode.
+
+cpdef inline void step_begins(Refiner r, long long[::1] work) noexcept nogil:
+    # remember the work counters as a step (a split) begins
+    cdef Index i
+    for i in range(work.shape[0]):
+        r.work_begun[i] = work[i]
+
+
+cpdef inline void step_undone(Refiner r, long long[::1] work) noexcept nogil:
+    # a step that returns NEED_ROOM changed nothing and runs again once the
+    # arrays have grown: its tests go back out of the counters
+    cdef Index i
+    for i in range(work.shape[0]):
+        work[i] = r.work_begun[i]
+
+
+cpdef inline bint trace_full(Refiner r) noexcept nogil:
+    # the trace (if on) lacks room for the rows one more step may write
+    return r.trace.shape[0] > 0 and r.ntrace + 64 > r.trace.shape[0]
+
+
+cpdef inline void trace_row(Refiner r, long long kind, long long created, long long deleted, long long steps,
+                            long long queue) noexcept nogil:
+    # append a trace row (if the trace is on)
+    cdef Index i = r.ntrace
+    if i < r.trace.shape[0]:
+        r.trace[i, 0] = kind
+        r.trace[i, 1] = created
+        r.trace[i, 2] = deleted
+        r.trace[i, 3] = steps
+        r.trace[i, 4] = queue
+        r.ntrace = i + 1

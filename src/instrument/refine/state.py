@@ -16,7 +16,6 @@ import math
 import numpy as np
 
 import cython
-from cython.cimports.instrument.core.mesh import Index
 
 from ..core.filled import filled
 from ..counters import NAMES
@@ -70,17 +69,22 @@ class Refiner:
         self.error_dest = -1
         self.error_apex = -1
         self.work_begun = np.zeros(len(NAMES), dtype=np.int64)
-        self.hkey = np.zeros(queue)
-        self.hseq = np.zeros(queue, dtype=np.int64)
-        self.htri = np.zeros(queue, dtype=np.int32)  # slots and stamps are int32 in the mesh too
-        self.hstamp = np.zeros(queue, dtype=np.int32)
+        # The queue, the pool and the scratch are written before they are
+        # read (entries below hsize / log_length / enc_fresh; the scratch
+        # within one step): uninitialised memory, which spares a small run
+        # zeroing half a megabyte (the allocation took a tenth of la.poly's
+        # refinement setup) and a large one nothing (fresh pages are zero).
+        self.hkey = np.empty(queue)
+        self.hseq = np.empty(queue, dtype=np.int64)
+        self.htri = np.empty(queue, dtype=np.int32)  # slots and stamps are int32 in the mesh too
+        self.hstamp = np.empty(queue, dtype=np.int32)
         self.bucket = filled((2, NBUCKETS), -1, np.int64)
         self.hsize = 0
         self.seq = 0
         self.top_bucket = -1
         self.log_length = 0
         self.compact_at = 0
-        self.enc = np.zeros((records, 4), dtype=np.int64)
+        self.enc = np.empty((records, 4), dtype=np.int64)
         self.enc_live = 0
         self.enc_fresh = 0
         self.enc_free = -1
@@ -88,11 +92,11 @@ class Refiner:
         self.enc_busy = False
         self.acute_slot = -1
         self.acute = 0
-        self.cav = np.zeros(slots, dtype=np.int64)
-        self.fan = np.zeros(slots, dtype=np.int64)
-        self.bnd = np.zeros((slots, 5), dtype=np.int64)
-        self.bval = np.zeros((slots, 2))
-        self.carry = np.zeros(slots)
+        self.cav = np.empty(slots, dtype=np.int64)
+        self.fan = np.empty(slots, dtype=np.int64)
+        self.bnd = np.empty((slots, 5), dtype=np.int64)
+        self.bval = np.empty((slots, 2))
+        self.carry = np.empty(slots)
         self.trace = np.zeros((1024 if trace else 0, 5), dtype=np.int64)
         self.ntrace = 0
 
@@ -104,47 +108,33 @@ class Refiner:
         return self.hkey.shape[0]
 
 
-@cython.ccall
-@cython.nogil
-@cython.exceptval(check=False)
-def step_begins(r: Refiner, work: cython.longlong[::1]) -> cython.void:
-    """Remember the work counters as a step (a split) begins."""
-    for i in range(work.shape[0]):
-        r.work_begun[i] = work[i]
+# The step and trace helpers: compiled, state.pxd's inline definitions (the
+# splits call them on every step); the same functions for the pure-Python mode.
+if not cython.compiled:
 
+    def step_begins(r: Refiner, work) -> None:
+        """Remember the work counters as a step (a split) begins."""
+        for i in range(work.shape[0]):
+            r.work_begun[i] = work[i]
 
-@cython.ccall
-@cython.nogil
-@cython.exceptval(check=False)
-def step_undone(r: Refiner, work: cython.longlong[::1]) -> cython.void:
-    """A step that returns NEED_ROOM changed nothing and runs again once the
-    arrays have grown: put its tests back out of the counters, so that the
-    counts do not depend on how much room the arrays started with."""
-    for i in range(work.shape[0]):
-        work[i] = r.work_begun[i]
+    def step_undone(r: Refiner, work) -> None:
+        """A step that returns NEED_ROOM changed nothing and runs again once the
+        arrays have grown: put its tests back out of the counters, so that the
+        counts do not depend on how much room the arrays started with."""
+        for i in range(work.shape[0]):
+            work[i] = r.work_begun[i]
 
+    def trace_full(r: Refiner) -> bool:
+        """The trace (if on) lacks room for the rows one more step may write."""
+        return r.trace.shape[0] > 0 and r.ntrace + 64 > r.trace.shape[0]
 
-@cython.ccall
-@cython.nogil
-@cython.exceptval(check=False)
-def trace_full(r: Refiner) -> cython.bint:
-    """The trace (if on) lacks room for the rows one more step may write."""
-    return r.trace.shape[0] > 0 and r.ntrace + 64 > r.trace.shape[0]
-
-
-@cython.ccall
-@cython.nogil
-@cython.exceptval(check=False)
-def trace_row(
-    r: Refiner, kind: cython.longlong, created: cython.longlong, deleted: cython.longlong,
-    steps: cython.longlong, queue: cython.longlong,
-) -> cython.void:
-    """Append a trace row (if the trace is on)."""
-    i: Index = r.ntrace
-    if i < r.trace.shape[0]:
-        r.trace[i, 0] = kind
-        r.trace[i, 1] = created
-        r.trace[i, 2] = deleted
-        r.trace[i, 3] = steps
-        r.trace[i, 4] = queue
-        r.ntrace = i + 1
+    def trace_row(r: Refiner, kind: int, created: int, deleted: int, steps: int, queue: int) -> None:
+        """Append a trace row (if the trace is on)."""
+        i = r.ntrace
+        if i < r.trace.shape[0]:
+            r.trace[i, 0] = kind
+            r.trace[i, 1] = created
+            r.trace[i, 2] = deleted
+            r.trace[i, 3] = steps
+            r.trace[i, 4] = queue
+            r.ntrace = i + 1
