@@ -479,10 +479,9 @@ def _start_edge(m: Mesh, h: Index, px: cython.double, py: cython.double) -> tupl
 def _right_of(m: Mesh, e: Index, px: cython.double, py: cython.double) -> cython.bint:
     """Is the point (px, py) strictly right of edge ``e`` (exact)?  A check
     Triangle does not make, so not counted among the orientation tests."""
-    xy = m.xy
     o: Index = m.corner[lnext(e)]
     d: Index = m.corner[lprev(e)]
-    return orient2d(xy[o, 0], xy[o, 1], xy[d, 0], xy[d, 1], px, py) < 0.0
+    return orient2d(m.xy[o, 0], m.xy[o, 1], m.xy[d, 0], m.xy[d, 1], px, py) < 0.0
 
 
 @cython.cfunc
@@ -643,7 +642,7 @@ def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cyth
     # vertex) and refinement goes on with a valid mesh.  Triangle makes no
     # such test: these orientations are not counted.
     for j in range(nb):
-        if orient2d(px, py, xy[r.bnd[j, 1], 0], xy[r.bnd[j, 1], 1], xy[r.bnd[j, 2], 0], xy[r.bnd[j, 2], 1]) <= 0.0:
+        if orient2d(px, py, m.xy[r.bnd[j, 1], 0], m.xy[r.bnd[j, 1], 1], m.xy[r.bnd[j, 2], 0], m.xy[r.bnd[j, 2], 1]) <= 0.0:
             forget_cavity(r, m, n)
             m.work[C_DUPLICATE] += 1
             return DONE
