@@ -160,20 +160,32 @@ def test_a_crossing_near_2_to_minus_1000_is_a_vertex_of_its_own(k):
     assert sorted(map(sorted, r["segments"].tolist())) == [[0, 3], [0, 8], [2, 3], [2, 7], [4, 8], [6, 8], [7, 8]]
 
 
-def test_beyond_2_to_512_the_mesh_is_one_mesh_times_the_scale():
-    """Beyond 2^+-512 squared lengths over- or underflow.  Chew's deletion
-    tested the sign of a dot product and point location picked its
-    direction from another: both now scale (core.scaling.scaled_dot), so the
-    mesh of A.poly under pq30 is the same mesh times the scale from 2^520 to
-    2^900 and from 2^-520 to 2^-600 (it was 83 vertices above and 85 or 86
-    below).  In range the queue's buckets see the squared lengths, so the
-    mesh there may differ, as Triangle's does between scales."""
+@pytest.mark.parametrize("switches, angle", [("pq30Q", 30), ("pq33Q", 33)])
+def test_the_mesh_is_one_mesh_times_the_scale(switches, angle):
+    """A.poly times 2^k is one mesh times 2^k (vertices, triangles and work
+    counters) from 2^-300 to 2^300 and another from 2^520 to 2^900 and
+    2^-520 to 2^-1000, with the same counts.  Beyond 2^+-512 squared
+    lengths over- or underflow: Chew's deletion tested the sign of a dot
+    product and point location picked its direction from another, and both
+    now scale (core.scaling.scaled_dot); Triangle's queue buckets keyed on
+    squared shortest edges, which all fell into the first or last bucket (85
+    vertices against 76 under pq30), and are now measured in a unit that
+    brings an input's extent to about 1 where it lies beyond 2^+-400
+    (refine.key_unit).  In range nothing changes: Triangle's keys."""
     A = triangle.get_data("A")
     meshes = []
-    for k in (520, 700, 900, -520, -600):
-        inp = {**A, "vertices": np.ldexp(A["vertices"], k)}
-        r = instrument.triangulate(inp, "pq30Q")
-        assert check_mesh(r, pslg=inp, min_angle=30) == []
-        meshes.append((np.ldexp(r["vertices"], -k), r["triangles"], r.work))
-    for v, t, w in meshes[1:]:
-        assert np.array_equal(v, meshes[0][0]) and np.array_equal(t, meshes[0][1]) and w == meshes[0][2]
+    for k in (0, 300, 520, 700, 900, -300, -520, -600, -1000):
+        inp = {**A, "vertices": np.ldexp(A["vertices"], k), "holes": np.ldexp(A["holes"], k)}
+        r = instrument.triangulate(inp, switches)
+        assert check_mesh(r, pslg=inp, min_angle=angle) == []
+        meshes.append((k, np.ldexp(r["vertices"], -k), r["triangles"], r.work))
+    # within 2^+-480 or so every step computes as at scale 1; beyond, the
+    # quality test and the Steiner point scale each triangle by its own power
+    # of two, which rounds some points an ulp apart from scale 1's: one
+    # mesh (bit for bit) per side, and the same counts on both
+    inside = [m for m in meshes if abs(m[0]) <= 300]
+    beyond = [m for m in meshes if abs(m[0]) > 300]
+    for group in (inside, beyond):
+        for k, v, t, w in group[1:]:
+            assert np.array_equal(v, group[0][1]) and np.array_equal(t, group[0][2]) and w == group[0][3], k
+    assert len(inside[0][1]) == len(beyond[0][1]) and len(inside[0][2]) == len(beyond[0][2])

@@ -22,7 +22,7 @@ from cython.cimports.libc.math import fabs
 from cython.cimports.instrument.core.subsegments import Subsegments
 from cython.cimports.instrument.refine.cavity import collect_cavity, forget_cavity, inherited
 from cython.cimports.instrument.refine.encroach import check_subsegment
-from cython.cimports.instrument.refine.order import ADVERSARY, LARGEST, RANDOM, SMALLEST, priority
+from cython.cimports.instrument.refine.order import ADVERSARY, LARGEST, RANDOM, SMALLEST, TRIANGLE, priority
 from cython.cimports.instrument.refine.queues import queue_push
 from cython.cimports.instrument.refine.state import Refiner
 
@@ -342,9 +342,22 @@ def _would_create(r: Refiner, m: Mesh, t: Index) -> Index:
 @cython.inline
 @cython.nogil
 @cython.exceptval(check=False)
-def _queue(r: Refiner, m: Mesh, t: Index, mn: cython.double, cos2: cython.double, circ2: cython.double) -> cython.void:
-    """Put bad triangle ``t`` on the queue under the strategy's priority."""
+def _queue(
+    r: Refiner, m: Mesh, t: Index, mn: cython.double, cos2: cython.double, circ2: cython.double, u: Index, v: Index,
+) -> cython.void:
+    """Put bad triangle ``t`` (shortest edge ``u v``, squared ``mn``) on the
+    queue under the strategy's priority."""
     strategy: cython.int = r.cfg.strategy
+    unit: cython.double = r.cfg.key_unit
+    dx: cython.double
+    dy: cython.double
+    if strategy == TRIANGLE and unit != 1.0:
+        # the bucket from the edge in the run's units (state.Config.key_unit):
+        # scaled by a power of two before squaring, so it neither over- nor
+        # underflows where the input's extent does not
+        dx = m.xy[u, 0] * unit - m.xy[v, 0] * unit
+        dy = m.xy[u, 1] * unit - m.xy[v, 1] * unit
+        mn = dx * dx + dy * dy
     created: Index = _would_create(r, m, t) if strategy == ADVERSARY else 0
     rnd: cython.double = 0.0
     if strategy == RANDOM:  # only then: the walks share this generator
@@ -393,7 +406,7 @@ def test_triangle(r: Refiner, m: Mesh, segs: Subsegments, t: Index) -> cython.vo
         exempt = m.seg[3 * t + k] == NO_SEG and _small_input_angle(m, segs, u, v)
         bad = not exempt
     if bad:
-        _queue(r, m, t, mn, cos2, circ2)
+        _queue(r, m, t, mn, cos2, circ2, u, v)
 
 
 @cython.ccall
@@ -413,7 +426,7 @@ def queue_triangles(r: Refiner, m: Mesh, ts: cython.longlong[::1]) -> cython.voi
         t = ts[i]
         if m.stamp[t] > 0:
             mn, cos2, area2, circ2, u, v = _shape(m, m.corner[3 * t], m.corner[3 * t + 1], m.corner[3 * t + 2], _needs_circumradius(r))
-            _queue(r, m, t, mn, cos2, circ2)
+            _queue(r, m, t, mn, cos2, circ2, u, v)
 
 
 @cython.ccall

@@ -21,6 +21,7 @@ cdef class Config:
     cdef public double good_angle    # cos^2 of the minimum angle
     cdef public double lens          # (2 cos^2 - 1)^2, the diametral lens test
     cdef public double off_constant  # the off-center's distance from the shortest edge, over its length
+    cdef public double key_unit      # a power of two: Triangle's bucket keys are squared edges in these units
 
 cdef class Refiner:
     cdef public Config cfg

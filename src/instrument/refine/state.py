@@ -50,6 +50,7 @@ class Config:
         self.lens = (2.0 * good - 1.0) ** 2
         # the off-center sits at 0.95 of the distance where the edge subtends theta
         self.off_constant = 0.475 * math.sqrt((1.0 + math.cos(theta)) / (1.0 - math.cos(theta))) if theta > 0 else 0.0
+        self.key_unit = 1.0  # new_refiner sets it from the mesh's extent
 
 
 @cython.cclass
