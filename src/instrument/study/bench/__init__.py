@@ -11,13 +11,14 @@
 Workloads (name: input, switches, goal):
 
   dt-1e5, dt-1e6   Delaunay of 10^5 / 10^6 uniform random points, no switches;
-                   goal: within 1.5x Triangle's time.
+                   goal: at most 0.8x / 0.6x Triangle's time.
   dt-1e7           10^7 points (opt-in: about 5 GB at its peak, minutes).
-  cdt-1e5          a wavy polygon with 16 wavy holes, 10^5 vertices, ``p``.
+  cdt-1e5          a wavy polygon with 16 wavy holes, 10^5 vertices, ``p``;
+                   goal: at most 0.8x.
   square-q30a1e-6  quality mesh of the unit square, ``pq30a0.000001`` (about
-                   1.6 million triangles); goal: within 1.5x.
+                   1.6 million triangles); goal: at most 0.8x.
   la-q30           la.poly from the `triangle` package's data folder, ``pq30``;
-                   goal: within 1.5x.
+                   goal: at most 1.0x.
   quad-12800       Barbič and Miller's quadratic example I(12800), ``pq20``; one
                    row per strategy (``--strategies``); goal: the least-work
                    strategy at least 5x faster than Triangle.

@@ -43,6 +43,7 @@ def new_row(name: str, w: Workload, strategy: str, threads: int | None = None) -
         "ratio": None,  # ours / Triangle
         "cgal_ratio": None,  # ours / CGAL
         "goal": w.goal,
+        "sweep": w.sweep,  # one row per strategy: the goal is the least-work row's
         "goal_met": None,
         "work": {},
         "note": "",
