@@ -98,12 +98,20 @@ def run_case(runners: Runners, case: Case, previous: Case | None = None, confirm
     ours = runners.run_ours(case.input, case.switches)
     verdict = judge_outcomes(runners, case, tri, ours)
     if not verdict.ok and tri.status == "ok":
-        # Triangle's answer is a reference only if a new process gives it too
-        fresh_tri = runners.run_triangle_fresh(case.input, case.switches)
-        if not same_outcome(tri, fresh_tri):
-            tri = fresh_tri
+        # Triangle's answer is a reference only if new processes give it too:
+        # the persistent worker's history can change it (its random state), and
+        # on some inputs it reads freed memory, so new processes crash or differ
+        first = runners.run_triangle_fresh(case.input, case.switches)
+        second = runners.run_triangle_fresh(case.input, case.switches)
+        if first.status == "ok" and same_outcome(first, second):
+            fresh = first
+        else:  # no reference: judged as where Triangle crashes
+            fresh = Outcome("crash", message=f"Triangle's answer is not reproducible: in new processes "
+                            f"{first.summary()}, then {second.summary()}")
+        if not same_outcome(tri, fresh):
+            tri = fresh
             verdict = judge_outcomes(runners, case, tri, ours)
-            verdict.notes["triangle_not_reproducible"] = "the persistent worker's answer differs from a new process's"
+            verdict.notes["triangle_not_reproducible"] = "the persistent worker's answer is not new processes'"
     run = Run(case, verdict, tri, ours)
     if verdict.ok:
         return run

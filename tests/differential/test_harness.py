@@ -1,4 +1,4 @@
-"""The harness's own rules: a Triangle answer that a new process does not
+"""The harness's own rules: a Triangle answer that new processes do not
 give again is no reference (harness.run_case)."""
 
 from __future__ import annotations
@@ -31,9 +31,10 @@ STALE = Outcome("ok", result=triangulate(CASE.input, "pcjQ"))
 
 
 class FakeRunners:
-    """Triangle's persistent worker answers ``persistent``; a new process ``fresh``; ours runs in-process."""
+    """Triangle's persistent worker answers ``persistent``; new processes
+    ``fresh`` (one outcome, or a list answered in turn); ours runs in-process."""
 
-    def __init__(self, persistent: Outcome, fresh: Outcome):
+    def __init__(self, persistent: Outcome, fresh):
         self.persistent, self.fresh, self.fresh_calls = persistent, fresh, 0
 
     def materialize(self, case):
@@ -44,7 +45,7 @@ class FakeRunners:
 
     def run_triangle_fresh(self, tri, opts):
         self.fresh_calls += 1
-        return self.fresh
+        return self.fresh[self.fresh_calls - 1] if isinstance(self.fresh, list) else self.fresh
 
     def run_ours(self, tri, opts):
         return Outcome("ok", result=triangulate(tri, opts))
@@ -55,7 +56,7 @@ class FakeRunners:
 def test_answer_a_new_process_does_not_give_is_no_reference():
     fake = FakeRunners(STALE, Outcome("crash", message="signal 11"))
     run = run_case(fake, CASE, confirmations=0)
-    assert fake.fresh_calls == 1
+    assert fake.fresh_calls == 2
     assert run.verdict.ok, run.verdict.failures
     assert "triangle_not_reproducible" in run.verdict.notes
 
@@ -63,8 +64,18 @@ def test_answer_a_new_process_does_not_give_is_no_reference():
 def test_reproduced_answer_stays_the_reference():
     fake = FakeRunners(STALE, STALE)
     run = run_case(fake, CASE, confirmations=0)
-    assert fake.fresh_calls == 1
+    assert fake.fresh_calls == 2
     assert not run.verdict.ok  # ours (no triangles) against a reproducible 2-triangle answer
+
+
+def test_answer_new_processes_disagree_on_is_no_reference():
+    # duplicate points at segment ends: Triangle reads freed memory, and new
+    # processes crash or answer (a case of the overlap survey under pzjQ)
+    fake = FakeRunners(STALE, [STALE, Outcome("crash", message="signal 11")])
+    run = run_case(fake, CASE, confirmations=0)
+    assert fake.fresh_calls == 2
+    assert run.verdict.ok, run.verdict.failures
+    assert "triangle_not_reproducible" in run.verdict.notes
 
 
 def test_same_outcome_compares_arrays():
