@@ -724,6 +724,11 @@ def refine(r: Refiner, m: Mesh, segs: Subsegments) -> cython.int:
         if queue_used(r) > max(r.compact_at, 2 * live + 4096):
             queue_compact(r, m)
             r.compact_at = 2 * queue_used(r) + 4096  # amortised: never twice in a row
+            if r.hsize == 0:
+                # every entry left was stale: hsize counted them until now,
+                # and popping an empty queue read before the bucket table
+                # (5 points from 1e-303 to 1e300 under q25n crashed)
+                return DONE
         if r.taken >= PAUSE_EVERY:
             r.taken = 0
             return PAUSE
