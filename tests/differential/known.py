@@ -110,15 +110,6 @@ DEFECTS += [
         and c.family == "hole-points-off",
     ),
     Defect(
-        "tiny-edge-steiner-precision",
-        "a bad triangle whose shortest edge (1.5e-38 long, near (1.2e-38, 1.2e-38)) lies beside vertices near 0.5 "
-        "(the input: (0, 0), (2^-126, 2^-126), three points of size about 1, one segment; campaign seed 2612, "
-        "regressions/tiny-edge-steiner-precision.json) under q10: ours raises a PrecisionError (the Steiner point, "
-        "computed from a far corner of the triangle, rounds onto the edge: splits._collapsed) where Triangle "
-        "meshes it with 305 vertices; computing the point from an end of the shortest edge would place it",
-        lambda c, f, n: f.kind == "ours-error-where-triangle-meshes" and "shortest edge is too short" in f.message,
-    ),
-    Defect(
         "strip-order-size",
         "a strip 0.00217 high along a unit square's bottom (a segment from x = 0.0054 to the right side) under "
         "pq32.5: ours makes 2013 to 2076 vertices over the re-expressions, Triangle 2000 to 2029, so the "

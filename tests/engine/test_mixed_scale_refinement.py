@@ -138,3 +138,24 @@ def test_a_segment_beside_a_side_stays_straight(budget):
     out = _run(STRIP_CASE, f"pqQS{budget}", 0.0)  # cut short: no angle bound
     assert "error" not in out, out
     assert out["problems"] == [], out
+
+
+# a bad triangle's shortest edge beside corners 1e255 away (a sweep of the
+# qY defect): its off-center, computed from the far corner, rounded onto the
+# edge; computed again from the edge's own ends it is placed
+FAR_CORNER_CASE = {
+    "vertices": [x.hex() for x in (0.0, 1.0000312115821628e255, -1.5254788956679213e134, -1.0000312115821628e255,
+                                   0.0, -7.46647428394217e-272, 1.0000312115821628e255, -1.5254788956679213e134,
+                                   0.0, 0.0)],
+    "segments": [],
+    "regions": [],
+}
+
+
+@pytest.mark.parametrize("switches", ["qYQ", "qQ"])
+def test_an_edge_beside_far_corners_is_split_from_its_own_ends(switches):
+    # valid (two needles 1e-272 wide beside 1e255 keep their angles: Triangle,
+    # whose tests overflow there, does not refine this input at all)
+    out = _run(FAR_CORNER_CASE, switches, 0.0)
+    assert "error" not in out, out
+    assert out["problems"] == [], out

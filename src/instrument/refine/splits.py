@@ -542,49 +542,64 @@ def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cyth
     xi: cython.double
     eta: cython.double
     off: cython.bint
-    px, py, xi, eta, off = steiner_point(r, m, h)
-    m.work[C_CIRCUMCENTER] += 1
-    a: Index = m.corner[h]  # apex
-    b: Index = m.corner[lnext(h)]  # org
-    c: Index = m.corner[lprev(h)]  # dest
-    if (
-        px != px or py != py  # NaN
-        or (px == m.xy[a, 0] and py == m.xy[a, 1])
-        or (px == m.xy[b, 0] and py == m.xy[b, 1])
-        or (px == m.xy[c, 0] and py == m.xy[c, 1])
-    ):
-        m.work[C_DUPLICATE] += 1
-        return DONE
-    steps0: cython.longlong = m.work[C_WALK]
+    a: Index
+    b: Index
+    c: Index
+    steps0: cython.longlong
     status: cython.int
     e: Index
-    # Triangle's walk from the handle, or from the edge before it when that
-    # puts the point on the inner side of the first edge
-    start: Index = lprev(h) if eta < xi else h
-    status = LOC_FAILED
-    e = -1
-    if not (fabs(xi) <= 1.7976931348623157e308 and fabs(eta) <= 1.7976931348623157e308) or _right_of(m, start, px, py):
-        # NaN parameters (a needle spanning 1e-304 .. 1e300), or finite ones
-        # that rounding has made meaningless (1e17 for a triangle with sides
-        # from 1e-306 to 1e-304, which picked an edge the off-center lay
-        # across): the walk needs the point left of its first edge (else it
-        # finds it "inside" the triangle it lies outside of, and the new
-        # vertex's fan folds over that edge), and an off-center can lie
-        # across any edge of its triangle, even a subsegment (outside the
-        # domain)
-        start, status, e = _start_edge(m, h, px, py)
-    if status != LOC_BLOCKED:
-        status, e = precise_walk(m, start, px, py, m.stamp.shape[0] + 64)
-    if status == LOC_FAILED:
-        status, e = line_walk(m, t, px, py, 4 * m.stamp.shape[0] + 64)
-    steps: cython.longlong = m.work[C_WALK] - steps0
-    # outside its own triangle (rare): make sure rounding has not put the
-    # point on or behind the shortest edge, which no off-center or
-    # circumcenter is (see _collapsed); such a split makes the same bad
-    # triangle again, smaller, without end
+    start: Index
+    steps: cython.longlong
     bad_edge: Index = -1
-    if not (status == LOC_INSIDE and e // 3 == t):
-        bad_edge = _collapsed(m, h, px, py)
+    for attempt in range(2):
+        px, py, xi, eta, off = steiner_point(r, m, h)
+        m.work[C_CIRCUMCENTER] += 1
+        a = m.corner[h]  # apex
+        b = m.corner[lnext(h)]  # org
+        c = m.corner[lprev(h)]  # dest
+        if (
+            px != px or py != py  # NaN
+            or (px == m.xy[a, 0] and py == m.xy[a, 1])
+            or (px == m.xy[b, 0] and py == m.xy[b, 1])
+            or (px == m.xy[c, 0] and py == m.xy[c, 1])
+        ):
+            m.work[C_DUPLICATE] += 1
+            return DONE
+        steps0 = m.work[C_WALK]
+        # Triangle's walk from the handle, or from the edge before it when that
+        # puts the point on the inner side of the first edge
+        start = lprev(h) if eta < xi else h
+        status = LOC_FAILED
+        e = -1
+        if not (fabs(xi) <= 1.7976931348623157e308 and fabs(eta) <= 1.7976931348623157e308) or _right_of(m, start, px, py):
+            # NaN parameters (a needle spanning 1e-304 .. 1e300), or finite ones
+            # that rounding has made meaningless (1e17 for a triangle with sides
+            # from 1e-306 to 1e-304, which picked an edge the off-center lay
+            # across): the walk needs the point left of its first edge (else it
+            # finds it "inside" the triangle it lies outside of, and the new
+            # vertex's fan folds over that edge), and an off-center can lie
+            # across any edge of its triangle, even a subsegment (outside the
+            # domain)
+            start, status, e = _start_edge(m, h, px, py)
+        if status != LOC_BLOCKED:
+            status, e = precise_walk(m, start, px, py, m.stamp.shape[0] + 64)
+        if status == LOC_FAILED:
+            status, e = line_walk(m, t, px, py, 4 * m.stamp.shape[0] + 64)
+        steps = m.work[C_WALK] - steps0
+        # outside its own triangle (rare): make sure rounding has not put the
+        # point on or behind the shortest edge, which no off-center or
+        # circumcenter is (see _collapsed); such a split makes the same bad
+        # triangle again, smaller, without end
+        bad_edge = -1
+        if not (status == LOC_INSIDE and e // 3 == t):
+            bad_edge = _collapsed(m, h, px, py)
+        if bad_edge < 0 or bad_edge == h:
+            break
+        # computed from a corner far from the shortest edge (0.5 beside an edge
+        # 1.5e-38 long near 1e-38), the point lost its offset from that edge:
+        # once more from the edge's own ends (the same point, other roundings;
+        # Triangle meshes such triangles)
+        h = bad_edge
     if bad_edge >= 0:
         r.error_org = m.corner[lnext(bad_edge)]
         r.error_dest = m.corner[lprev(bad_edge)]
