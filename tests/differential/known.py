@@ -129,19 +129,6 @@ DEFECTS += [
         lambda c, f, n: f.kind == "invalid-mesh" and "is not a chain of collinear subsegments" in f.message
         and c.family == "crossing-segments" and not read_switches(c.switches).q,
     ),
-    Defect(
-        "tiny-scale-boundary-marker",
-        "four points near 1e-100 ((0, 0), (1e-100, 0), (1.36e-100, 4.93e-101), (6.4e-101, -4.93e-101)) with "
-        "one segment joining the last two, under pcq20Q (the same at any power-of-two scale: times 2^332 it is "
-        "an ordinary input; Triangle crashes on it): the segment passes within rounding of hull vertex 1, "
-        "refinement splits it there (splits._split_at_apex), and the two halves it marks are the hull edges "
-        "3-1 and 1-2, whose hull subsegments (marker 1) it overwrites with its own record (marker 0), so two "
-        "boundary subsegments have marker 0 (campaign seed 2613 at b983662, shrunk, "
-        "regressions/tiny-scale-boundary-marker.json). A fix must merge the records where a half is already a "
-        "subsegment",
-        lambda c, f, n: f.kind == "invalid-mesh" and "has marker 0" in f.message and c.family == "crossing-segments"
-        and read_switches(c.switches).q,
-    ),
 ]
 
 BY_ID = {d.id: d for d in DEFECTS}

@@ -228,13 +228,19 @@ def _split_at_apex(r: Refiner, m: Mesh, segs: Subsegments, e: Index, f: Index, t
         remember_corners(m, n_c1 // 3)
         h0 = n_c0
         h1 = n_c1
-    # the half at o keeps the record, the half at d takes the new one (as a split)
+    # the half at o keeps the record, the half at d takes the new one (as a
+    # split); a half that is already a subsegment with a marker (c is a hull
+    # vertex under c, and the half a hull edge) keeps it, as where two input
+    # segments overlap the first one's nonzero marker stays: overwritten, the
+    # hull's marker 1 became the segment's 0 on the boundary
     u = m.corner[lnext(h0)]
     w = m.corner[lprev(h0)]
-    mark_both(m, h0, rec if u == o or w == o else half)
+    if m.seg[h0] == NO_SEG or segs.marker[m.seg[h0]] == 0:
+        mark_both(m, h0, rec if u == o or w == o else half)
     u = m.corner[lnext(h1)]
     w = m.corner[lprev(h1)]
-    mark_both(m, h1, rec if u == o or w == o else half)
+    if m.seg[h1] == NO_SEG or segs.marker[m.seg[h1]] == 0:
+        mark_both(m, h1, rec if u == o or w == o else half)
     m.work[C_SEGMENT_SPLIT] += 1
     for i in range(made):
         if triangles:
