@@ -5,8 +5,8 @@ The helpers every refinement step calls (the quality test's pieces, the
 queue's push, the encroachment tests of a subsegment side, the bucket key)
 are written twice: in the ``.pxd`` files, so that every kernel inlines them,
 and in the ``.py`` files for the pure-Python mode (docs/architecture.md).
-This keeps the two copies from drifting apart: every strategy's key, area
-bounds, regions, Chew's deletion and off-centers are exercised.
+This keeps the two copies from drifting apart: four strategies' keys (the
+buckets, a heap), area bounds, Chew's deletion and off-centers are exercised.
 """
 
 from __future__ import annotations

@@ -293,8 +293,9 @@ def turn_corners(m: Mesh, shift: Index) -> cython.void:
     1.6 million triangles): new corner ``k`` is old corner ``(k + shift) %
     3``; a twin, an edge of a triangle turned the same way, is renumbered
     to match (shift 1: edge k becomes k - 1, that is lprev; shift 2: lnext).
-    The two shifts are written out (refinement turns every triangle before
-    and after, and the remainders cost more than the moves)."""
+    The shift picks one of two fixed permutations per slot (refinement
+    turns every triangle before and after, and remainders per corner cost
+    more than the moves)."""
     e: Index
     c0: cython.int
     c1: cython.int
@@ -317,25 +318,33 @@ def turn_corners(m: Mesh, shift: Index) -> cython.void:
         s1 = m.seg[e + 1]
         s2 = m.seg[e + 2]
         if shift == 1:  # (c1, c2, c0)
-            m.corner[e] = c1
-            m.corner[e + 1] = c2
-            m.corner[e + 2] = c0
-            m.seg[e] = s1
-            m.seg[e + 1] = s2
-            m.seg[e + 2] = s0
-            m.twin[e] = cython.cast(cython.int, lprev(w1) if w1 >= 0 else w1)
-            m.twin[e + 1] = cython.cast(cython.int, lprev(w2) if w2 >= 0 else w2)
-            m.twin[e + 2] = cython.cast(cython.int, lprev(w0) if w0 >= 0 else w0)
+            c0, c1, c2 = c1, c2, c0
+            s0, s1, s2 = s1, s2, s0
+            w0, w1, w2 = w1, w2, w0
         else:  # (c2, c0, c1)
-            m.corner[e] = c2
-            m.corner[e + 1] = c0
-            m.corner[e + 2] = c1
-            m.seg[e] = s2
-            m.seg[e + 1] = s0
-            m.seg[e + 2] = s1
-            m.twin[e] = cython.cast(cython.int, lnext(w2) if w2 >= 0 else w2)
-            m.twin[e + 1] = cython.cast(cython.int, lnext(w0) if w0 >= 0 else w0)
-            m.twin[e + 2] = cython.cast(cython.int, lnext(w1) if w1 >= 0 else w1)
+            c0, c1, c2 = c2, c0, c1
+            s0, s1, s2 = s2, s0, s1
+            w0, w1, w2 = w2, w0, w1
+        m.corner[e] = c0
+        m.corner[e + 1] = c1
+        m.corner[e + 2] = c2
+        m.seg[e] = s0
+        m.seg[e + 1] = s1
+        m.seg[e + 2] = s2
+        m.twin[e] = _turned(w0, shift)
+        m.twin[e + 1] = _turned(w1, shift)
+        m.twin[e + 2] = _turned(w2, shift)
+
+
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _turned(w: Index, shift: Index) -> cython.int:
+    """Twin edge ``w`` renumbered in its triangle turned by ``shift``."""
+    if w < 0:
+        return cython.cast(cython.int, w)
+    return cython.cast(cython.int, lprev(w) if shift == 1 else lnext(w))
 
 
 @cython.ccall
