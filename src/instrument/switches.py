@@ -10,6 +10,7 @@ area 1 plus the ``-e`` switch, which silently ruins meshes (its users write
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 from dataclasses import dataclass
@@ -26,7 +27,7 @@ class SwitchError(TriangleError):
     the `triangle` package reports these as RuntimeError, so it is both."""
 
 
-@dataclass
+@dataclass(frozen=True)
 class Options:
     p: bool = False  # read a PSLG
     r: bool = False  # refine an existing mesh
@@ -107,50 +108,55 @@ def _read_float(s: str, i: int) -> tuple[float | None, int]:
 
 def parse(opts: str, *, library: bool = True) -> Options:
     """Parse a switch string.  ``library`` mode scans from the first character
-    (the Python API); the command line strips one leading dash per argument."""
-    o = Options()
-    s = opts
+    (the Python API); the command line strips one leading dash per argument.
+    ``Options`` is immutable, so a string seen before is parsed once."""
+    return _parse(opts) if isinstance(opts, str) else _parse.__wrapped__(opts)
+
+
+@functools.lru_cache(maxsize=256)
+def _parse(s: str) -> Options:
+    f: dict = {}  # the switches seen, as Options' fields
     i = 0
     while i < len(s):
         ch = s[i]
         i += 1
         start = i  # where a switch's number starts
         if ch == "q":
-            o.q = True
+            f["q"] = True
             value, i = _read_float(s, i)
             if value is not None and not math.isfinite(value):
                 raise SwitchError(f"Minimum angle {s[start:i]} is out of range (it overflows a double).")
-            o.min_angle = 20.0 if value is None else value
+            f["min_angle"] = 20.0 if value is None else value
         elif ch == "a":
             value, i = _read_float(s, i)
             if value is None:
-                o.var_area = True
+                f["var_area"] = True
             else:
                 if not value > 0.0:
                     raise SwitchError("Maximum area must be greater than zero.")
                 if not math.isfinite(value):
                     raise SwitchError(f"Maximum area {s[start:i]} is out of range (it overflows a double).")
-                o.max_area = value
+                f["max_area"] = value
         elif ch == "S":
             digits = re.match(r"[0-9]*", s[i:]).group()
-            o.S = int(digits) if digits else 0
+            f["S"] = int(digits) if digits else 0
             i += len(digits)
         elif ch == "o":
             if i < len(s) and s[i] == "2":
-                o.order = 2
+                f["order"] = 2
                 i += 1
         elif ch == "Y":
-            o.Y += 1
+            f["Y"] = f.get("Y", 0) + 1
         elif ch == "V":
-            o.V += 1
+            f["V"] = f.get("V", 0) + 1
         elif ch in "hH?":
-            o.h = True
+            f["h"] = True
         elif ch == "L":
-            o.D = True
+            f["D"] = True
         elif ch in "prucADjevngBPNEIOXziFlsCQwW":
-            setattr(o, ch, True)
-    if not o.r and not o.p:
-        o.var_area = False  # variable areas need regions or an .area file
-    if o.r or not o.p:
-        o.A = False
-    return o
+            f[ch] = True
+    if not f.get("r") and not f.get("p"):
+        f["var_area"] = False  # variable areas need regions or an .area file
+    if f.get("r") or not f.get("p"):
+        f["A"] = False
+    return Options(**f)

@@ -73,8 +73,9 @@ def delaunay(
     ids = order  # cut_order reorders it in place
     s = xy[ids]  # the points in order: the cuts start from them
     alternate = method == "divconq"
-    top = parallel.plan(ids.size, alternate, threads)
-    if top.halves is None:
+    # (a small input never splits: no plan to make)
+    top = parallel.plan(ids.size, alternate, threads) if threads > 1 and ids.size >= 2 * parallel.MIN_LEAF else None
+    if top is None or top.halves is None:
         pts = divconq.cut_order(xy, ids, alternate, s)
         del s
         m = Mesh(pts, 2 * n + 8 + extra_triangles, vertices=n + extra_vertices, work=work, **tables)
