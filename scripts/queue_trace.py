@@ -45,6 +45,7 @@ import instrument
 import instrument.refine as driver
 from instrument.refine import criteria, splits
 from instrument.core.mesh import lnext, lprev
+from instrument.core.status import NEED_ROOM
 
 events, current = [], [None]
 
@@ -66,8 +67,11 @@ def wrap_refine(refine):
 
 def wrap_split(split):
     def splitting(r, m, segs, h):
-        events.append(('S', ' '.join(g(m, m.corner[x]) for x in (lnext(h), lprev(h), h))))
-        return split(r, m, segs, h)
+        what = ' '.join(g(m, m.corner[x]) for x in (lnext(h), lprev(h), h))
+        status = split(r, m, segs, h)
+        if status != NEED_ROOM:  # a step that ran out of room changed nothing and runs again
+            events.append(('S', what))
+        return status
     return splitting
 
 criteria.queue_push = wrap_push(criteria.queue_push)
