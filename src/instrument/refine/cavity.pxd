@@ -7,6 +7,7 @@ cpdef void forget_cavity(Refiner r, Mesh m, Index n) noexcept nogil
 cpdef void order_rim(Refiner r, Mesh m, Index nb, Index first) noexcept nogil
 cpdef void fill_cavity(Refiner r, Mesh m, Index p, Index n, Index nb) noexcept nogil
 cpdef bint has_room(Refiner r, Mesh m, Index nb) noexcept nogil
+cpdef Index legalize_fan(Refiner r, Mesh m, Index made) noexcept nogil
 cpdef Index new_vertex(Mesh m, double px, double py, int kind, int marker, Index p0, Index p1, Index p2,
                        double s, double t) noexcept nogil
 

@@ -37,6 +37,7 @@ from cython.cimports.instrument.core.mesh import (
     set_parent,
     spare_triangles,
 )
+from cython.cimports.instrument.core.insert import flip, should_flip
 from cython.cimports.instrument.core.navigate import remember_corners
 from cython.cimports.instrument.core.predicates import incircle
 from cython.cimports.instrument.counters import C_CREATED, C_DELETED, C_INCIRCLE
@@ -299,6 +300,69 @@ def new_vertex(
     m.vmark[v] = marker
     set_parent(m, v, p0, p1, p2, s, t)
     return v
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def legalize_fan(r: Refiner, m: Mesh, made: Index) -> Index:
+    """Lawson's flips around a vertex that is corner 0 of the triangles
+    ``r.fan[:made]`` (it became their corner without an insertion: a
+    subsegment split at an existing vertex, splits._split_at_apex), until
+    every edge facing it is locally Delaunay.  Each flip gives its two
+    triangles the bound an insertion's flip gives (``_flip_bound``) and the
+    attribute of the side at the vertex (no subsegment is flipped, so both
+    sides lie in one region).  Leaves the triangles around the vertex in
+    ``r.fan``, corner 0 the vertex (``flip`` keeps it there), and returns
+    their count.  ``r.cav`` is the stack; the caller made sure the queue
+    has room for every triangle around the vertex."""
+    v: Index = m.corner[3 * r.fan[0]]
+    n: Index = 0
+    for i in range(made):
+        r.cav[n] = 3 * r.fan[i]
+        n += 1
+    count: Index = made
+    e: Index
+    t1: Index
+    t2: Index
+    near: cython.double
+    far: cython.double
+    attr: cython.double
+    unused: cython.double
+    while n > 0:
+        n -= 1
+        e = r.cav[n]
+        if not should_flip(m, e):
+            continue
+        near, attr = inherited(m, e // 3)
+        far, unused = inherited(m, m.twin[e] // 3)
+        t1 = flip(m, e)
+        t2 = m.twin[3 * t1 + 1] // 3
+        inherit(m, t1, _flip_bound(near, far), attr)
+        inherit(m, t2, _flip_bound(near, far), attr)
+        remember_corners(m, t1)
+        remember_corners(m, t2)
+        r.fan[count] = t1
+        r.fan[count + 1] = t2
+        count += 2
+        r.cav[n] = 3 * t1
+        r.cav[n + 1] = 3 * t2
+        n += 2
+    # the flips reuse the slots they free: keep each live slot once
+    kept: Index = 0
+    seen: cython.bint
+    for i in range(count):
+        t1 = r.fan[i]
+        if m.stamp[t1] <= 0 or m.corner[3 * t1] != v:
+            continue
+        seen = False
+        for j in range(kept):
+            if r.fan[j] == t1:
+                seen = True
+        if not seen:
+            r.fan[kept] = t1
+            kept += 1
+    return kept
 
 
 # The small helpers every split and deletion calls: compiled, cavity.pxd's

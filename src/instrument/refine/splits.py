@@ -36,6 +36,7 @@ from cython.cimports.instrument.counters import (
     C_ORIENT,
     C_DELETED,
     C_DUPLICATE,
+    C_FLIP,
     C_QUEUE_POP,
     C_REJECTED,
     C_SEGMENT_SPLIT,
@@ -46,6 +47,7 @@ from cython.cimports.instrument.counters import (
 )
 from cython.cimports.instrument.refine.cavity import (
     collect_cavity,
+    legalize_fan,
     fill_cavity,
     forget_cavity,
     has_room,
@@ -188,8 +190,11 @@ def _split_at_apex(r: Refiner, m: Mesh, segs: Subsegments, e: Index, f: Index, t
         r.error_org = o
         r.error_dest = d
         return PRECISION
-    if segs.count >= segs.marker.shape[0] or queue_used(r) + 4 > r.hkey.shape[0] or r.enc_live + 4 > r.enc.shape[0]:
-        r.need = max(r.need, 4)
+    # room to queue every triangle around c after the flips that make the
+    # mesh Delaunay again (legalize_fan), and to pool the subsegments facing c
+    room: Index = m.nlive + 4
+    if segs.count >= segs.marker.shape[0] or queue_used(r) + room > r.hkey.shape[0] or r.enc_live + room > r.enc.shape[0]:
+        r.need = max(r.need, room)
         step_undone(r, m.work)
         return NEED_ROOM
     rec: Index = m.seg[e]
@@ -242,12 +247,28 @@ def _split_at_apex(r: Refiner, m: Mesh, segs: Subsegments, e: Index, f: Index, t
     if m.seg[h1] == NO_SEG or segs.marker[m.seg[h1]] == 0:
         mark_both(m, h1, rec if u == o or w == o else half)
     m.work[C_SEGMENT_SPLIT] += 1
+    flips: Index = 0
+    made0: Index = made
+    if made:
+        # the flip o d -> c y leaves c's new edges to test: a vertex beside
+        # them may lie inside their triangles' circles (c was only within
+        # rounding of o d), and a mesh left so is not Delaunay
+        u = m.corner[lnext(h0)]  # h0 = c -> u
+        w = m.corner[lnext(h1)]  # h1 = w -> c
+        flips = m.work[C_FLIP]
+        made = legalize_fan(r, m, made)
+        flips = m.work[C_FLIP] - flips
+        if flips:
+            h0 = find_edge(m, c, u)
+            h1 = find_edge(m, w, c)
     for i in range(made):
         if triangles:
             test_triangle(r, m, segs, r.fan[i])
+    if flips:  # (without flips the rim is the far triangle's, as before: c faces none of it anew)
+        test_fan(r, m, segs, made, False)
     check_subsegment(r, m, h0)
     check_subsegment(r, m, h1)
-    trace_row(r, T_SEGMENT, made, 1 + made, 0, r.hsize)
+    trace_row(r, T_SEGMENT, made0 + 2 * flips, 1 + made0 + 2 * flips, 0, r.hsize)
     return DONE
 
 
