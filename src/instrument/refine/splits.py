@@ -416,13 +416,17 @@ def split_encroached(r: Refiner, m: Mesh, segs: Subsegments, triangles: cython.b
     u: Index
     v: Index
     status: cython.int
+    fresh: Index
     while r.enc_live > 0 and r.budget != 0:
+        # over the free slots to the next record, in a loop of its own: the
+        # pool is mostly free slots, and each call scans it from the start
         i = r.enc_cursor
-        if i >= r.enc_fresh:  # the next pass
+        fresh = r.enc_fresh
+        while i < fresh and r.enc[i, 0] < 0:
+            i += 1
+        r.enc_cursor = i
+        if i >= fresh:  # the next pass
             r.enc_cursor = 0
-            continue
-        if r.enc[i, 0] < 0:
-            r.enc_cursor = i + 1
             continue
         if trace_full(r):
             return NEED_ROOM
