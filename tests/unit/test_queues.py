@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import pytest
 
@@ -96,3 +98,33 @@ def test_pool_reuses_the_slot_freed_last_and_finds_a_moved_edge():
     assert enc_edge(r, m, 2) == -1
     m.arrays()["seg"][edges[0]] = 0
     assert enc_edge(r, m, 2) == edges[0]
+
+
+def _bucket_by_frexp(key: float) -> int:
+    """Triangle's bucket from frexp, as order.py's pure-Python copy computes it."""
+    if key <= 0.0 or key != key:
+        return 4095
+    big = key >= 1.0
+    length = key if big else 1.0 / key
+    if not length <= 1.7976931348623157e308:
+        return 0 if big else 4095
+    mant, ex = math.frexp(length)
+    f, e = 2.0 * mant, ex - 1
+    if f == 1.0 and e > 0:
+        f, e = 2.0, e - 1
+    x = min(2 * e + (1 if f > math.sqrt(2.0) else 0), 2047)
+    return 2047 - x if big else 2048 + x
+
+
+def test_bucket_reads_the_same_exponent_and_fraction_as_frexp():
+    # the compiled bucket reads the key's bits (order.pxd): the same bucket
+    # as frexp for every kind of double, around sqrt 2 and powers of two too
+    rng = np.random.default_rng(5)
+    keys = list(np.ldexp(rng.random(20000) + 0.5, rng.integers(-1074, 1024, 20000)))
+    s2 = math.sqrt(2.0)
+    for e in range(-1074, 1024, 7):
+        for base in (1.0, s2, np.nextafter(s2, 0.0), np.nextafter(s2, 3.0), np.nextafter(1.0, 2.0), np.nextafter(2.0, 0.0)):
+            keys.append(math.ldexp(base, e))
+    keys += [0.0, -1.0, 5e-324, 1.7976931348623157e308, math.inf, -math.inf, math.nan, 1.0, 2.0, 0.5]
+    for key in keys:
+        assert triangle_bucket(float(key)) == _bucket_by_frexp(float(key)), key

@@ -76,19 +76,25 @@ def collect_cavity(r: Refiner, m: Mesh, px: cython.double, py: cython.double, t0
     two.  The cavity's triangles form a tree rooted at ``t0`` (and ``t1``)
     and each flip crosses one tree edge, so the bound is that fold along
     the path from the root, whatever the order of the flips:
-    ``r.carry[i]`` holds it for ``r.cav[i]``.
+    ``r.carry[i]`` holds it for ``r.cav[i]``.  A run without area bounds
+    and attributes (the tables have no rows) has nothing to pass on: then
+    ``r.carry`` and ``r.bval`` are left alone (``fill_cavity`` reads them
+    only when there is).
     """
     area: cython.double
     attr: cython.double
+    inherits: cython.bint = m.area_bound.shape[0] > 0 or m.attribute.shape[0] > 0
     n: Index = 1
     r.cav[0] = t0
-    area, attr = inherited(m, t0)
-    r.carry[0] = area
+    if inherits:
+        area, attr = inherited(m, t0)
+        r.carry[0] = area
     m.tflag[t0] = 1
     if t1 >= 0:
         r.cav[1] = t1
-        area, attr = inherited(m, t1)
-        r.carry[1] = area
+        if inherits:
+            area, attr = inherited(m, t1)
+            r.carry[1] = area
         m.tflag[t1] = 1
         n = 2
     tested: Index = r.cav.shape[0]  # triangles tested outside go at the end of r.cav
@@ -103,10 +109,11 @@ def collect_cavity(r: Refiner, m: Mesh, px: cython.double, py: cython.double, t0
     b: Index
     c: Index
     outside: cython.bint
-    passed: cython.double
+    passed: cython.double = -1.0
     while i < n:
         t = r.cav[i]
-        passed = r.carry[i]
+        if inherits:
+            passed = r.carry[i]
         i += 1
         for k in range(3):
             e = 3 * t + k
@@ -124,8 +131,9 @@ def collect_cavity(r: Refiner, m: Mesh, px: cython.double, py: cython.double, t0
                     if incircle(m.xy[a, 0], m.xy[a, 1], m.xy[b, 0], m.xy[b, 1], m.xy[c, 0], m.xy[c, 1], px, py) > 0.0:
                         m.tflag[u] = 1
                         r.cav[n] = u
-                        area, attr = inherited(m, u)
-                        r.carry[n] = _flip_bound(passed, area)  # the flip across e
+                        if inherits:
+                            area, attr = inherited(m, u)
+                            r.carry[n] = _flip_bound(passed, area)  # the flip across e
                         n += 1
                         continue
                     m.tflag[u] = 2
@@ -137,9 +145,10 @@ def collect_cavity(r: Refiner, m: Mesh, px: cython.double, py: cython.double, t0
             r.bnd[nb, 2] = m.corner[lprev(e)]
             r.bnd[nb, 3] = m.seg[e]
             r.bnd[nb, 4] = e
-            area, attr = inherited(m, t)
-            r.bval[nb, 0] = passed
-            r.bval[nb, 1] = attr
+            if inherits:
+                area, attr = inherited(m, t)
+                r.bval[nb, 0] = passed
+                r.bval[nb, 1] = attr
             nb += 1
     for j in range(tested, r.cav.shape[0]):
         m.tflag[r.cav[j]] = 0
@@ -227,6 +236,7 @@ def fill_cavity(r: Refiner, m: Mesh, p: Index, n: Index, nb: Index) -> cython.vo
     first_org: Index = -1
     prev_dest: Index = -1
     prev: Index = -1
+    inherits: cython.bint = m.area_bound.shape[0] > 0 or m.attribute.shape[0] > 0  # see collect_cavity
     for j in range(nb):
         k = r.fan[j]
         u = r.bnd[k, 1]
@@ -234,7 +244,8 @@ def fill_cavity(r: Refiner, m: Mesh, p: Index, n: Index, nb: Index) -> cython.vo
         t = new_triangle(m, p, u, v)
         bond(m, 3 * t, r.bnd[k, 0])  # (new_triangle left the other edges unlinked)
         m.seg[3 * t] = cython.cast(cython.int, r.bnd[k, 3])
-        inherit(m, t, r.bval[k, 0], r.bval[k, 1])
+        if inherits:
+            inherit(m, t, r.bval[k, 0], r.bval[k, 1])
         r.fan[j] = t
         remember_corners(m, t)
         # link the fan: edge v -> p of (p, u, v) to p -> v of the next, which

@@ -399,10 +399,7 @@ def test_triangle(r: Refiner, m: Mesh, segs: Subsegments, t: Index) -> cython.vo
     if not bad and r.cfg.angle_test and cos2 > r.cfg.good_angle:
         # the shortest edge is not a subsegment and its ends lie on segments
         # meeting at a small angle: leave it alone
-        k = 0
-        for kk in range(3):
-            if m.corner[3 * t + kk] != u and m.corner[3 * t + kk] != v:
-                k = kk
+        k = 2 if u == a else (0 if u == b else 1)  # the corner opposite u v (_shape: a b, b c or c a)
         exempt = m.seg[3 * t + k] == NO_SEG and _small_input_angle(m, segs, u, v)
         bad = not exempt
     if bad:

@@ -400,22 +400,28 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
     v: Index = new_vertex(m, px, py, V_SEGMENT, segs.marker[rec], e0, e1, e0, split, 0.0)
     fill_cavity(r, m, v, n, nb)
     t: Index
+    # the halves as edges on the side e was on, v -> d and o -> v, if the fan
+    # has them (what find_edge would find: the fan is linked around v)
+    eb: Index = -1
+    ea: Index = -1
     for j in range(nb):  # the halves: spokes to o and d (edge 2 of (v, o|d, x), edge 1 of (v, x, o|d))
         t = r.fan[j]
         for k in range(1, 3):
             w = m.corner[3 * t + k]
             if w == o or w == d:
                 mark_both(m, 3 * t + 3 - k, rec if w == o else half)
+                if w == d and k == 1:
+                    eb = 3 * t + 2
+                elif w == o and k == 2:
+                    ea = 3 * t + 1
     m.work[C_SEGMENT_SPLIT] += 1
     m.work[C_STEINER] += 1
     if r.budget > 0:
         r.budget -= 1
     test_fan(r, m, segs, nb, triangles)
-    # the halves themselves, on the side e was on
-    eb: Index = find_edge(m, v, d)
+    # the halves themselves
     if eb >= 0:
         check_subsegment(r, m, eb)
-    ea: Index = find_edge(m, o, v)
     if ea >= 0:
         check_subsegment(r, m, ea)
     trace_row(r, T_SEGMENT, nb, n, 0, r.hsize)
@@ -437,13 +443,17 @@ def split_encroached(r: Refiner, m: Mesh, segs: Subsegments, triangles: cython.b
     u: Index
     v: Index
     status: cython.int
+    fresh: Index
     while r.enc_live > 0 and r.budget != 0:
+        # over the free slots to the next record, in a loop of its own: the
+        # pool is mostly free slots, and each call scans it from the start
         i = r.enc_cursor
-        if i >= r.enc_fresh:  # the next pass
+        fresh = r.enc_fresh
+        while i < fresh and r.enc[i, 0] < 0:
+            i += 1
+        r.enc_cursor = i
+        if i >= fresh:  # the next pass
             r.enc_cursor = 0
-            continue
-        if r.enc[i, 0] < 0:
-            r.enc_cursor = i + 1
             continue
         if trace_full(r):
             return NEED_ROOM

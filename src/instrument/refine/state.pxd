@@ -1,5 +1,6 @@
 # Refinement's state (state.py): its configuration, and what the loop keeps between calls.
 from instrument.core.mesh cimport Index
+from libc.string cimport memcpy
 
 cpdef enum:         # trace rows' kinds (state.TRACE_KINDS names them)
     T_SEGMENT = 0
@@ -71,18 +72,15 @@ cdef class Refiner:
 # state.py repeats them for the pure-Python mode.
 
 cpdef inline void step_begins(Refiner r, long long[::1] work) noexcept nogil:
-    # remember the work counters as a step (a split) begins
-    cdef Index i
-    for i in range(work.shape[0]):
-        r.work_begun[i] = work[i]
+    # remember the work counters as a step (a split) begins (one block copy:
+    # every step does it, and the element loop cost ~1% of refinement)
+    memcpy(&r.work_begun[0], &work[0], work.shape[0] * sizeof(long long))
 
 
 cpdef inline void step_undone(Refiner r, long long[::1] work) noexcept nogil:
     # a step that returns NEED_ROOM changed nothing and runs again once the
     # arrays have grown: its tests go back out of the counters
-    cdef Index i
-    for i in range(work.shape[0]):
-        work[i] = r.work_begun[i]
+    memcpy(&work[0], &r.work_begun[0], work.shape[0] * sizeof(long long))
 
 
 cpdef inline bint trace_full(Refiner r) noexcept nogil:
