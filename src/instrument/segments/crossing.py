@@ -17,6 +17,15 @@ that no product of doubles leaves) with a forward error bound; when the
 bound cannot certify the rounding (or long double is no wider than double,
 or the kernels run uncompiled) the point is computed in exact rational
 arithmetic.
+
+``scouted_crossing`` is the other way, Triangle's, measured from its output
+(tests/differential/known.py's former ``star-size``): the crossing as the
+crossed subsegment's end ``r`` plus t times the subsegment, t a ratio of
+cross products taken against the inserted piece's far end, all in doubles.
+It depends on which end the piece is walked from (that end is e1), so two
+meshers that round the same crossing each its own way start refinement
+from points a few units in the last place apart and part.  Segment recovery
+uses it where it is well conditioned and the exact rounding elsewhere.
 """
 
 from __future__ import annotations
@@ -24,6 +33,7 @@ from __future__ import annotations
 from fractions import Fraction
 
 import cython
+from cython.cimports.instrument.core.scaling import unit_scale
 from cython.cimports.libc.math import fabs, nextafter
 
 # The filter's slack over its first-order error terms (covers the
@@ -137,3 +147,56 @@ def crossing_point(
                     return px, py
     with cython.gil:
         return _exact_point(ax, ay, bx, by, rx, ry, lx, ly)
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def scouted_crossing(
+    e1x: cython.double, e1y: cython.double, e2x: cython.double, e2y: cython.double,
+    rx: cython.double, ry: cython.double, lx: cython.double, ly: cython.double,
+) -> tuple[cython.double, cython.double, cython.double]:
+    """``(t, x, y)``: where the piece e1 -> e2 crosses the subsegment r -> l
+    (``r`` right of e1 -> e2), computed in doubles as Triangle does:
+    ``t = (ey wx - ex wy) / (ty ex - tx ey)`` with ``e = e2 - e1``,
+    ``T = l - r``, ``w = r - e2``, and the point ``r + t T``.  ``t`` is -1
+    where the lines are parallel or t is not strictly inside (0, 1) (the
+    caller rounds the exact crossing then).
+
+    The differences are scaled by a power of two where they leave
+    [2^-240, 2^240], so that the products of two neither overflow nor
+    vanish; t (a ratio) is then what the unscaled formula gives wherever
+    that does not overflow or underflow, and the result stays the scaled
+    copy of the result at another scale."""
+    ex: cython.double = e2x - e1x
+    ey: cython.double = e2y - e1y
+    tx: cython.double = lx - rx
+    ty: cython.double = ly - ry
+    wx: cython.double = rx - e2x
+    wy: cython.double = ry - e2y
+    mx: cython.double = max(max(max(fabs(ex), fabs(ey)), max(fabs(tx), fabs(ty))), max(fabs(wx), fabs(wy)))
+    f: cython.double
+    if not (mx <= 2.0**240 and mx >= 2.0**-240):
+        if not mx <= 1.7976931348623157e308:  # a difference overflowed: quarter first
+            ex = 0.25 * e2x - 0.25 * e1x
+            ey = 0.25 * e2y - 0.25 * e1y
+            tx = 0.25 * lx - 0.25 * rx
+            ty = 0.25 * ly - 0.25 * ry
+            wx = 0.25 * rx - 0.25 * e2x
+            wy = 0.25 * ry - 0.25 * e2y
+            mx = max(max(max(fabs(ex), fabs(ey)), max(fabs(tx), fabs(ty))), max(fabs(wx), fabs(wy)))
+        f = unit_scale(mx)
+        ex *= f
+        ey *= f
+        tx *= f
+        ty *= f
+        wx *= f
+        wy *= f
+    den: cython.double = ty * ex - tx * ey
+    num: cython.double = ey * wx - ex * wy
+    if not (den != 0.0):
+        return -1.0, 0.0, 0.0
+    t: cython.double = num / den
+    if not (t > 0.0 and t < 1.0):
+        return -1.0, 0.0, 0.0
+    return t, rx + t * (lx - rx), ry + t * (ly - ry)

@@ -45,7 +45,7 @@ from cython.cimports.instrument.core.predicates import orient2d
 from cython.cimports.instrument.core.scaling import unit_scale
 from cython.cimports.instrument.core.status import DONE, FAILED, NEED_BUFFER, NEED_ROOM
 from cython.cimports.instrument.core.subsegments import Subsegments, new_record
-from cython.cimports.instrument.segments.crossing import crossing_point
+from cython.cimports.instrument.segments.crossing import crossing_point, scouted_crossing
 from cython.cimports.instrument.counters import C_ORIENT, C_STEINER
 from cython.cimports.libc.math import fabs, sqrt
 
@@ -330,6 +330,25 @@ def turn_to(m: Mesh, a: Index, b: Index, e0: Index, plain: Index, sa: Index, sb:
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
+def _facing_subsegment(m: Mesh, a: Index, b: Index, plain: Index, sa: Index, sb: Index) -> Index:
+    """The subsegment edge (right -> left of a -> b) of the triangle at ``a``
+    that the ray ``a -> b`` leaves through, or -1 (no such triangle, a
+    vertex on the ray, or an edge that is no subsegment)."""
+    e0: Index = vertex_edge(m, a)
+    if e0 < 0:
+        return -1
+    e: Index
+    where: cython.int
+    e, where = turn_to(m, a, b, e0, plain, sa, sb)
+    if e < 0 or where != 0:
+        return -1
+    c: Index = lnext(e)
+    return c if m.seg[c] != NO_SEG else -1
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
 def _recover(
     m: Mesh, segs: Subsegments, a: Index, b: Index, marker: cython.int, source: cython.int, buf: cython.longlong[::1],
     plain: Index, sa: Index, sb: Index,
@@ -337,8 +356,15 @@ def _recover(
     """Recover one piece ``a -> b`` of input segment ``source``.
 
     Returns ``(kind, v, e)`` with kind one of the ``_PIECE_*`` values:
-    continue with ``v -> b``, or the walk met subsegment edge ``e``.
-    ``plain``, ``sa``, ``sb``: as for ``_side`` (the source's endpoints).
+    continue with ``v -> b``, or the piece crosses subsegment edge ``e``
+    (right -> left of ``v`` -> the other end), ``v`` the end the crossing is
+    computed from (Triangle's choice, measured from its crossing vertices:
+    scripts/crossing_agreement.py).  That is ``a`` where the edge facing
+    ``a`` is the subsegment; else ``b`` where the edge facing ``b`` is one
+    (looked for only once the walk has met a subsegment, so a piece that
+    crosses none costs what it did); else ``a`` with the first subsegment
+    the walk meets.  ``plain``, ``sa``, ``sb``: as for ``_side`` (the
+    source's endpoints).
     """
     xy = m.xy
     e0: Index = vertex_edge(m, a)
@@ -371,9 +397,14 @@ def _recover(
     tw: Index
     y: Index
     s: cython.double
+    cb: Index
     while end < 0:
         if m.seg[c] != NO_SEG:
-            return _PIECE_CROSSES, -1, c
+            if nq > 0:  # not the edge facing a: the one facing b first
+                cb = _facing_subsegment(m, b, a, plain, sa, sb)
+                if cb >= 0:
+                    return _PIECE_CROSSES, b, cb
+            return _PIECE_CROSSES, a, c
         tw = m.twin[c]
         if tw == NO_EDGE:
             return _PIECE_FAILED, -1, -1
@@ -590,14 +621,62 @@ def crossing_parameter(
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
+def _scouted_fits(
+    m: Mesh, c: Index, right: Index, left: Index, sx: cython.double, sy: cython.double,
+    px: cython.double, py: cython.double, tol: cython.double,
+) -> cython.bint:
+    """May the crossing be Triangle's point ``s`` rather than ``p``, the exact
+    crossing rounded once?  Only where ``s`` is within 2^-40 of the
+    coordinates' magnitude of ``p`` (far off means the formula lost its
+    bits: nearly parallel segments, an underflow), farther than ``_near``'s
+    tolerance from both ends of ``c`` (a crossing within rounding of an end
+    is that end, as the exact path decides), and in the closed union of the
+    two triangles beside ``c`` (so the split stays local as the exact point's
+    does)."""
+    xy = m.xy
+    if not (fabs(sx) <= 1.7976931348623157e308 and fabs(sy) <= 1.7976931348623157e308):
+        return False
+    big: cython.double = max(max(fabs(xy[right, 0]), fabs(xy[right, 1])), max(fabs(xy[left, 0]), fabs(xy[left, 1])))
+    if fabs(sx - px) > 2.0**-40 * big or fabs(sy - py) > 2.0**-40 * big:
+        return False
+    if _near(xy, right, sx, sy, tol) or _near(xy, left, sx, sy, tol):
+        return False
+    rx: cython.double = xy[right, 0]
+    ry: cython.double = xy[right, 1]
+    lx: cython.double = xy[left, 0]
+    ly: cython.double = xy[left, 1]
+    x: Index
+    m.work[C_ORIENT] += 1
+    if orient2d(rx, ry, lx, ly, sx, sy) >= 0.0:  # c's own side (or on c): its triangle (x, right, left)
+        x = m.corner[c]
+    else:
+        if m.twin[c] == NO_EDGE:
+            return False
+        x = m.corner[m.twin[c]]  # the triangle (x, left, right)
+        rx, lx = lx, rx
+        ry, ly = ly, ry
+    m.work[C_ORIENT] += 2
+    return (orient2d(xy[x, 0], xy[x, 1], rx, ry, sx, sy) >= 0.0
+            and orient2d(lx, ly, xy[x, 0], xy[x, 1], sx, sy) >= 0.0)
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
 def _split_at_crossing(
     m: Mesh, segs: Subsegments, a: Index, b: Index, c: Index, stack: cython.longlong[::1]
 ) -> tuple[Index, cython.bint]:
-    """Make a vertex where segment ``a b`` crosses subsegment edge ``c``.
+    """Make a vertex where segment ``a b`` crosses subsegment edge ``c``
+    (right -> left of ``a -> b``), ``a`` the end the piece was walked from.
 
     Returns ``(v, reroute)``, ``v = -1`` if the tables are full.  The
-    crossing point is the exact one rounded once (crossing.py), so it is
-    inserted where it actually lies:
+    crossing point is Triangle's (``scouted_crossing``: along ``c`` from its
+    right end, in doubles, against ``b``) where that lands within 2^-40 of
+    the coordinates' magnitude of the exact crossing and in one of the two
+    triangles beside ``c``, not at a corner; elsewhere (nearly parallel
+    segments, a crossing within rounding of an end, an overflow) it is the
+    exact one rounded once (crossing.py).  Either is inserted where it
+    actually lies:
     exactly on ``c`` it splits ``c``; anywhere else (or on an existing
     vertex) ``reroute`` is True and the caller re-routes ``c`` through it.
     The mesh stays a valid triangulation either way; forcing a rounded
@@ -613,10 +692,7 @@ def _split_at_crossing(
     r: Index = m.seg[c]
     left: Index = m.corner[lprev(c)]
     right: Index = m.corner[lnext(c)]
-    t: cython.double = crossing_parameter(
-        xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[right, 0], xy[right, 1], xy[left, 0], xy[left, 1]
-    )
-    # the exact crossing rounded once (t above only for the attributes)
+    # the exact crossing rounded once
     px: cython.double
     py: cython.double
     px, py = crossing_point(
@@ -625,6 +701,20 @@ def _split_at_crossing(
     # relative to the point; the floor is one subnormal unit (an absolute
     # 1e-300 took every vertex of an input near 1e-300 for the crossing)
     tol: cython.double = 2.0**-48 * (fabs(px) + fabs(py)) + 2.0**-1074
+    t: cython.double
+    sx: cython.double
+    sy: cython.double
+    t, sx, sy = scouted_crossing(
+        xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[right, 0], xy[right, 1], xy[left, 0], xy[left, 1]
+    )
+    if t > 0.0 and _scouted_fits(m, c, right, left, sx, sy, px, py, tol):
+        px = sx
+        py = sy
+        tol = 2.0**-48 * (fabs(px) + fabs(py)) + 2.0**-1074
+    else:  # t only for the attributes
+        t = crossing_parameter(
+            xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[right, 0], xy[right, 1], xy[left, 0], xy[left, 1]
+        )
     if _near(xy, right, px, py, tol):
         return right, False
     if _near(xy, left, px, py, tol):
@@ -749,6 +839,8 @@ def insert_segments(m: Mesh, segs: Subsegments, work: Recovery) -> cython.int:
     reroute: cython.bint
     src_c: Index
     marker: cython.int
+    e1: Index
+    e2: Index
     rows: cython.longlong[:, ::1] = work.rows
     while True:
         if work.top == 0:  # (the stack always has room for one)
@@ -791,7 +883,9 @@ def insert_segments(m: Mesh, segs: Subsegments, work: Recovery) -> cython.int:
             r = m.seg[c]
             cr = m.corner[lnext(c)]
             cl = m.corner[lprev(c)]
-            p, reroute = _split_at_crossing(m, segs, a, b, c, buf)
+            e1 = v
+            e2 = b if v == a else a
+            p, reroute = _split_at_crossing(m, segs, e1, e2, c, buf)
             if p < 0:
                 return NEED_ROOM
             if reroute:
@@ -820,9 +914,17 @@ def insert_segments(m: Mesh, segs: Subsegments, work: Recovery) -> cython.int:
             elif p == a or p == b:  # cannot happen: c never ends at a or b
                 return FAILED
             if p != a and p != b:
-                pieces[sp + 1, 0] = pieces[work.top - 1, 0]  # a
-                pieces[work.top - 1, 0] = p  # p -> b later
-                pieces[sp + 1, 1] = p  # a -> p first
+                # the piece on e1's side first, then the rest (a piece of
+                # its own: its crossings are found from its ends as above,
+                # which is where Triangle goes on from)
+                if e1 == a:
+                    pieces[sp + 1, 0] = a  # a -> p first
+                    pieces[sp + 1, 1] = p
+                    pieces[work.top - 1, 0] = p  # p -> b later
+                else:
+                    pieces[sp + 1, 0] = p  # p -> b first
+                    pieces[sp + 1, 1] = b
+                    pieces[work.top - 1, 1] = p  # a -> p later
                 pieces[sp + 1, 2] = src
                 sp += 1
             work.top = sp + 1
