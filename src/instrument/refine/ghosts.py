@@ -12,16 +12,22 @@ made reuses the point's vertex record, and an entry is served again if that
 vertex's insertion leaves its triangle, with the new vertex in place of the
 point, in the same record and orientation.
 
-Facts of Triangle's insertion these functions follow (from its flip
-traces; they reproduce which entries it serves again): the three (four)
-triangles of the split keep the edges of the split triangle(s), the split
-triangle's record keeps its own orientation and the new ones start at
-orientation 0; a flip of the fan triangle on edge a -> b with the triangle
-b -> a, f beyond leaves the fan triangle's record holding the part at a
-(one orientation lower) and the other record the part at f (one above its
-orientation on edge b -> a), and goes on with a -> f; the undo restores
-every record, the split's new records go back to the pool, and the next
-split takes them, last freed first.
+The model of Triangle's insertion these functions follow (checked against
+its -VVV queue events, scripts/queue_trace.py: with it the campaign's q34
+and q32.5 point sets are refined split for split as Triangle does):
+
+* a 1 -> 3 split of the located handle's triangle keeps that record on the
+  handle's edge, in the handle's orientation, and puts the two new ones
+  (orientation 0) on the edges dest -> apex and apex -> org;
+* a 2 -> 4 split on edge o -> d keeps that triangle's record on d -> apex
+  (one orientation up) and the twin's on apex' -> d (two up), and puts new
+  records on apex -> o and o -> apex' (the latter first, from the pool);
+* a flip of the fan triangle on edge a -> b with the triangle b -> a, f
+  beyond leaves the fan triangle's record holding the part at a (one
+  orientation lower), going on with a -> f, and the other record the part
+  at f (one above its orientation on b -> a);
+* the undo restores every record and returns the split's new records to
+  the pool, which hands them out last freed first.
 
 Records are named by the slot of the triangle ours holds at the time (the
 mesh does not change between a rejection and the next vertex but for
@@ -42,7 +48,10 @@ from cython.cimports.instrument.refine.state import Refiner
 NEW_FIRST = cython.declare(cython.longlong, -1)
 NEW_SECOND = cython.declare(cython.longlong, -2)
 
-#: Which of the two the undo frees last (the next split takes it first).
+#: Which of the two the undo frees last (the next split takes it first):
+#: the second, the choice that reproduces Triangle's queue on the q32.5 point
+#: set (regressions/points-q32.5-stale-record-size.json: 1243 vertices as
+#: Triangle; the first gives 1248; the q34 set agrees either way).
 FREED_LAST = cython.declare(cython.longlong, -2)
 
 
