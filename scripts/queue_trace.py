@@ -74,7 +74,15 @@ def wrap_split(split):
         return status
     return splitting
 
+def wrap_ghost(push):
+    def queued(r, key, org, dest, v, *record):  # a rejected point's fan triangle (v: the point, until it is rejected)
+        m = current[0]
+        events.append(('Q', ' '.join(g(m, x) for x in (org, dest, v))))
+        return push(r, key, org, dest, v, *record)
+    return queued
+
 criteria.queue_push = wrap_push(criteria.queue_push)
+criteria.queue_push_ghost = wrap_ghost(criteria.queue_push_ghost)
 splits.split_bad_triangle = wrap_split(splits.split_bad_triangle)
 driver.refine = wrap_refine(splits.refine)
 inp, sw = pickle.load(open(sys.argv[1], 'rb'))

@@ -63,21 +63,20 @@ DEFECTS += [
 DEFECTS += [
     Defect(
         "queue-order-size",
-        "Triangle's refinement order follows its record memory, which ours does not model, so the meshes part "
-        "and ours can end above Triangle's re-expression spread. Two mechanisms, each seen in Triangle's -VVV "
-        "queue events (scripts/queue_trace.py): (1) the first list of bad triangles is made in Triangle's pool "
+        "Triangle's refinement order follows its record memory, which ours models only in part, so the meshes "
+        "part and ours can end above Triangle's re-expression spread, as seen in Triangle's -VVV queue events "
+        "(scripts/queue_trace.py): the first list of bad triangles is made in Triangle's pool "
         "order (records reused where its flips and splits left them), ours in slot order: the airfoil_exterior "
         "corpus file refined with r from Triangle's -p mesh under pq30a queues triangle (1.5, -2) (0.362, -0.131) "
         "(0.172, -0.137) first, ours 102nd, and at split 17 of 340 Triangle takes it where ours takes another "
-        "of the same bucket (382 vertices against 365, bound 375.3); (2) a triangle queued during an insertion "
-        "that is then rejected (it encroaches a subsegment) keeps its record, which holds the triangle's memory "
-        "address and vertex addresses; the subsegment's split point then reuses the rejected vertex's memory and "
-        "its insertion rebuilds the same triangle in the same record, so the stale record is valid again and is "
-        "served before the triangles queued since: 4 points under q34 part at split 51 of 130 so (179 vertices "
-        "against 127; ours, which rejects before touching the mesh and checks stamps, takes the next one of bucket "
-        "2084). (1) also parts la.poly under pq30YYa4.79 at split 6 (181 vertices against 172, bound 178.8: "
-        "in Triangle's first list of bad triangles the one it splits there is 112th and the one ours splits 158th; "
-        "in ours' they are 159th and 158th)",
+        "of the same bucket (382 vertices against 365, bound 375.3); it also parts la.poly under pq30YYa4.79 at "
+        "split 6 (181 vertices against 172, bound 178.8: in Triangle's first list of bad triangles the one it "
+        "splits there is 112th and the one ours splits 158th; in ours' they are 159th and 158th). (A second "
+        "mechanism, the entries a rejected Steiner point queued and the split point's insertion revives in the "
+        "same records, is modelled: refine/ghosts.py; regressions/q34-fifo-order-size.json and "
+        "points-q32.5-stale-record-size.json now agree with Triangle split for split. What it leaves out: a "
+        "rejected point on an edge, a revival by a vertex other than the subsegment's split point, and one "
+        "after Chew's deletions)",
         lambda c, f, n: f.kind == "size" and (
             # a corpus or sample input, within 5 % of the rule's bound
             (c.family == "realworld" and n.get("vertices", {}).get("ours", 0) <= 1.05 * n.get("size_bound", 0))

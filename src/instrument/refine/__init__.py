@@ -12,6 +12,8 @@ Modules, in the order they build on each other:
 * ``order``: the strategies' priority keys;
 * ``state``: the run's ``Config`` and the loop's ``Refiner``;
 * ``queues``: the bad-triangle queue (a heap, or Triangle's buckets);
+* ``ghosts``: Triangle's triangle records through an insertion (which of a
+  rejected Steiner point's queued triangles it serves again);
 * ``encroach``: the diametral-lens test and the encroached-subsegment pool;
 * ``cavity``: inserting a vertex (Bowyer-Watson cavity, rim, fan);
 * ``criteria``: the bad-triangle test and the Steiner point;
@@ -204,6 +206,8 @@ def grow_refiner(ms: MeshState, r: Refiner) -> None:
         heap = max(2 * heap, slots + 16)
         for name in ("hkey", "hseq", "htri", "hstamp"):
             setattr(r, name, _widened(getattr(r, name), heap, 0))
+    if r.ghost.shape[0] < r.nghost + need:  # a rejected insertion's entries (queues.queue_push_ghost)
+        r.ghost = _widened(r.ghost, 2 * r.ghost.shape[0] + need, 0)
     enc = r.enc.shape[0]
     if enc < r.enc_live + need:  # a pool: slots keep their places
         r.enc = _widened(r.enc, 2 * enc + need, 0)
@@ -212,7 +216,7 @@ def grow_refiner(ms: MeshState, r: Refiner) -> None:
     # The cavity's scratch holds nothing between steps (a NEED_ROOM step
     # changed nothing and starts again): fresh zeros, which the OS maps
     # lazily, instead of copies that touch every page.
-    for name in ("cav", "fan", "bnd", "bval", "carry"):
+    for name in ("cav", "fan", "bnd", "bval", "carry", "lineage", "fan_rec"):
         a = np.asarray(getattr(r, name))
         if a.shape[0] < slots:
             setattr(r, name, np.zeros((slots,) + a.shape[1:], dtype=a.dtype))

@@ -14,7 +14,7 @@ closer) or circumcenter (``steiner_point``).
 from __future__ import annotations
 
 import cython
-from cython.cimports.instrument.core.mesh import NO_SEG, V_SEGMENT, Index, Mesh, lnext, lprev, next_random
+from cython.cimports.instrument.core.mesh import NO_SEG, V_FREE, V_SEGMENT, Index, Mesh, lnext, lprev, next_random
 from cython.cimports.instrument.core.navigate import edge_around, origin_edge
 from cython.cimports.instrument.core.predicates import orient2d
 from cython.cimports.instrument.core.scaling import scaled_pair, unit_scale
@@ -23,7 +23,7 @@ from cython.cimports.instrument.core.subsegments import Subsegments
 from cython.cimports.instrument.refine.cavity import collect_cavity, forget_cavity, inherited
 from cython.cimports.instrument.refine.encroach import check_subsegment
 from cython.cimports.instrument.refine.order import ADVERSARY, LARGEST, RANDOM, SMALLEST, TRIANGLE, priority
-from cython.cimports.instrument.refine.queues import queue_push
+from cython.cimports.instrument.refine.queues import queue_push, queue_push_ghost
 from cython.cimports.instrument.refine.state import Refiner
 
 _INF = cython.declare(cython.double, float("inf"))
@@ -439,3 +439,82 @@ def test_fan(r: Refiner, m: Mesh, segs: Subsegments, nb: Index, triangles: cytho
             test_triangle(r, m, segs, t)
         if m.seg[3 * t] != NO_SEG:
             check_subsegment(r, m, 3 * t)
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _fan_triangle_bad(
+    r: Refiner, m: Mesh, segs: Subsegments, a: Index, b: Index, c: Index, bound: cython.double, rim_seg: cython.bint,
+) -> tuple[cython.bint, cython.double, Index, Index]:
+    """``test_triangle``'s verdict on a triangle that is not in the mesh:
+    corners (apex ``a``, org ``b``, dest ``c``) as the slot's would be,
+    its area bound ``bound``, and whether its edge b c (opposite the apex)
+    is a subsegment (the other two are new edges).  Returns (bad, squared
+    shortest edge, the shortest edge's ends)."""
+    mn: cython.double
+    cos2: cython.double
+    area2: cython.double
+    circ2: cython.double
+    u: Index
+    v: Index
+    mn, cos2, area2, circ2, u, v = _shape(m, a, b, c, False)
+    if r.cfg.fixed_area and 0.5 * area2 > r.cfg.max_area:
+        return True, mn, u, v
+    if r.cfg.regional_area and bound > 0.0 and 0.5 * area2 > bound:
+        return True, mn, u, v
+    if r.cfg.builtin_user and builtin_unsuitable(m, b, c, a):
+        return True, mn, u, v
+    if r.cfg.angle_test and cos2 > r.cfg.good_angle:
+        # the shortest edge is a subsegment only if it is the rim edge b c
+        if (u == b or u == c) and (v == b or v == c) and rim_seg:
+            return True, mn, u, v
+        return not _small_input_angle(m, segs, u, v), mn, u, v
+    return False, mn, u, v
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def queue_rejected_fan(r: Refiner, m: Mesh, segs: Subsegments, nb: Index, px: cython.double, py: cython.double) -> cython.void:
+    """Triangle inserts a Steiner point, queueing the bad triangles of its
+    fan as its flips make them, before it finds that the point encroaches
+    a subsegment and undoes the insertion; the entries stay in its queue
+    (queues.queue_push_ghost).  Ours rejects before touching the mesh: queue
+    the fan that point (px, py) would have had on the rim ``r.bnd[:nb]``,
+    in ``r.fan[:nb]``'s order (cavity.order_rim), as ghosts for the vertex
+    made next, each with its record and orientation in ``r.fan_rec[:nb]``
+    (ghosts.rejected_fan_records).  Triangle's order only (its buckets);
+    the caller made sure there is room (cavity.has_room, queues.ghost_room)."""
+    if r.cfg.strategy != TRIANGLE:
+        return
+    # the point stands in as the next vertex (there is room: has_room), as
+    # Triangle's own record does until the rejection frees it
+    p: Index = m.nvert
+    x0: cython.double = m.xy[p, 0]
+    y0: cython.double = m.xy[p, 1]
+    kind: cython.int = m.vtype[p]
+    m.xy[p, 0] = px
+    m.xy[p, 1] = py
+    m.vtype[p] = V_FREE
+    unit: cython.double = r.cfg.key_unit
+    k: Index
+    bad: cython.bint
+    mn: cython.double
+    u: Index
+    v: Index
+    dx: cython.double
+    dy: cython.double
+    for j in range(nb):
+        k = r.fan[j]
+        bad, mn, u, v = _fan_triangle_bad(r, m, segs, p, r.bnd[k, 1], r.bnd[k, 2], r.bval[k, 0], r.bnd[k, 3] != NO_SEG)
+        if bad:
+            if unit != 1.0:  # as _queue
+                dx = m.xy[u, 0] * unit - m.xy[v, 0] * unit
+                dy = m.xy[u, 1] * unit - m.xy[v, 1] * unit
+                mn = dx * dx + dy * dy
+            queue_push_ghost(r, priority(TRIANGLE, mn, 0.0, 0.0, 0, r.seq, 0.0), r.bnd[k, 1], r.bnd[k, 2], p,
+                             r.fan_rec[j, 0], r.fan_rec[j, 1])
+    m.xy[p, 0] = x0
+    m.xy[p, 1] = y0
+    m.vtype[p] = kind

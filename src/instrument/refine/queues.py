@@ -15,17 +15,26 @@ compaction is one sweep in log order, which within a bucket is FIFO order.
 An entry remembers its triangle's stamp: a triangle split or deleted since
 it was queued has another stamp, and the entry is stale (lazy deletion, as
 Triangle checks its records).
+
+A Steiner point Triangle rejects has queued bad triangles before it is
+rejected (ghost entries, ``queue_push_ghost``): they are served, in their
+place, if the vertex that next takes its record rebuilds their triangle in
+the same triangle record (ghosts.py).
 """
 
 from __future__ import annotations
 
 import cython
 from cython.cimports.instrument.core.mesh import Index, Mesh
+from cython.cimports.instrument.core.navigate import find_edge
 from cython.cimports.instrument.refine.order import TRIANGLE
 from cython.cimports.instrument.refine.state import Refiner
 
 #: The bucket log marks a served entry so.
 POPPED = cython.declare(cython.longlong, -2)
+
+#: A ghost row's orientation once its vertex's insertion has revived it.
+GHOST_LIVE = cython.declare(cython.longlong, 9)
 
 
 @cython.ccall
@@ -36,6 +45,7 @@ def queue_clear(r: Refiner) -> cython.void:
     r.hsize = 0
     r.top_bucket = -1
     r.log_length = 0
+    r.nghost = 0
     for k in range(r.bucket.shape[1]):
         r.bucket[0, k] = -1
         r.bucket[1, k] = -1
@@ -100,13 +110,27 @@ def queue_compact(r: Refiner, m: Mesh) -> cython.void:
             r.bucket[0, k] = -1
             r.bucket[1, k] = -1
         r.top_bucket = -1
+        ng: Index = 0
+        g: Index
         for i in range(r.log_length):
-            if r.hseq[i] != POPPED and m.stamp[r.htri[i]] == r.hstamp[i]:
-                r.hkey[n] = r.hkey[i]
-                r.htri[n] = r.htri[i]
-                r.hstamp[n] = r.hstamp[i]
-                _bucket_append(r, n)
-                n += 1
+            if r.hseq[i] == POPPED:
+                continue
+            if r.htri[i] < 0:  # a ghost (rows in log order): kept while it may be served
+                g = -1 - r.htri[i]
+                if not ghost_pending(r, m, g) and ghost_slot(r, m, g) < 0:
+                    continue
+                for c in range(5):
+                    r.ghost[ng, c] = r.ghost[g, c]
+                r.htri[i] = cython.cast(cython.int, -1 - ng)
+                ng += 1
+            elif m.stamp[r.htri[i]] != r.hstamp[i]:
+                continue
+            r.hkey[n] = r.hkey[i]
+            r.htri[n] = r.htri[i]
+            r.hstamp[n] = r.hstamp[i]
+            _bucket_append(r, n)
+            n += 1
+        r.nghost = ng
         r.log_length = n
         r.hsize = n
         return
@@ -122,6 +146,101 @@ def queue_compact(r: Refiner, m: Mesh) -> cython.void:
     r.hsize = n
     for i in range(n // 2 - 1, -1, -1):
         _sift_down(r, i, n)
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def queue_push_ghost(r: Refiner, key: cython.double, org: Index, dest: Index, v: Index, rec: Index, k: Index) -> cython.void:
+    """Queue the triangle (org, dest, v) that a rejected Steiner point's
+    insertion made, as Triangle does before it finds that the point
+    encroaches a subsegment and undoes it (bucket order only; the caller
+    made sure there is room, ``ghost_room``).
+
+    Triangle's entry holds the triangle's record and orientation and its
+    corners' vertex records, and is served only if they still match.  The
+    point's vertex record goes back to the pool and the next vertex made
+    takes it (``v``: that vertex's number here).  Should that vertex's
+    insertion leave (org, dest, v) in the same triangle record (``rec``)
+    and orientation (``k``), which ghosts.revive_ghosts decides, the entry
+    matches again, in its queued place (``ghost_slot``)."""
+    g: Index = r.nghost
+    r.nghost = g + 1
+    r.ghost[g, 0] = org
+    r.ghost[g, 1] = dest
+    r.ghost[g, 2] = v
+    r.ghost[g, 3] = rec
+    r.ghost[g, 4] = k
+    i: Index = r.log_length
+    r.log_length = i + 1
+    r.hsize += 1
+    r.seq += 1
+    r.hkey[i] = key
+    r.htri[i] = cython.cast(cython.int, -1 - g)
+    r.hstamp[i] = 0
+    _bucket_append(r, i)
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def ghost_room(r: Refiner, n: Index) -> cython.bint:
+    """Room for ``n`` more ghost entries' rows?  If not, says how many the
+    driver must add (``r.need``)."""
+    if r.nghost + n <= r.ghost.shape[0]:
+        return True
+    r.need = max(r.need, n + 4)
+    return False
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def ghost_pending(r: Refiner, m: Mesh, g: Index) -> cython.bint:
+    """Does ghost row ``g`` wait for its vertex (not made yet)?"""
+    return r.ghost[g, 0] >= 0 and r.ghost[g, 4] != GHOST_LIVE and r.ghost[g, 2] >= m.nvert
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def ghost_slot(r: Refiner, m: Mesh, g: Index) -> Index:
+    """The live triangle ghost row ``g`` matches now, or -1: the row was
+    revived (its record holds the triangle again, ghosts.revive_ghosts) and
+    the triangle with edge org -> dest and its vertex as apex is still there."""
+    if r.ghost[g, 0] < 0 or r.ghost[g, 4] != GHOST_LIVE:
+        return -1
+    v: Index = r.ghost[g, 2]
+    e: Index = find_edge(m, r.ghost[g, 0], r.ghost[g, 1])
+    if e < 0 or m.corner[e] != v:
+        return -1
+    return e // 3
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def ghost_revive(r: Refiner, g: Index, live: cython.bint) -> cython.void:
+    """Ghost row ``g``'s vertex has been inserted: its record holds its
+    triangle again (``live``: served when popped), or not (dropped)."""
+    if live:
+        r.ghost[g, 4] = GHOST_LIVE
+    else:
+        r.ghost[g, 0] = -1
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def ghosts_orphaned(r: Refiner, m: Mesh) -> cython.void:
+    """Vertices were deleted before the ghosts' vertex was made: Triangle's
+    pool hands out their records first (last in, first out), so the vertex
+    made next is not the rejected one's record.  The waiting ghosts (the
+    last rows) are dropped (a later vertex may take that record; not modelled)."""
+    g: Index = r.nghost - 1
+    while g >= 0 and ghost_pending(r, m, g):
+        r.ghost[g, 0] = -1
+        g -= 1
 
 
 # Pushing, and the room check: compiled, queues.pxd's inline definitions

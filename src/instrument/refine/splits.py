@@ -35,6 +35,7 @@ from cython.cimports.instrument.counters import (
     C_CIRCUMCENTER,
     C_ORIENT,
     C_DELETED,
+    C_DELETED_VERTEX,
     C_DUPLICATE,
     C_FLIP,
     C_QUEUE_POP,
@@ -57,10 +58,12 @@ from cython.cimports.instrument.refine.cavity import (
     new_vertex,
     order_rim,
 )
-from cython.cimports.instrument.refine.criteria import steiner_point, test_fan, test_triangle
+from cython.cimports.instrument.refine.criteria import queue_rejected_fan, steiner_point, test_fan, test_triangle
 from cython.cimports.instrument.refine.deletion import chew_delete
 from cython.cimports.instrument.refine.encroach import check_subsegment, enc_edge, enc_free, enc_push, in_lens, may_split, queue_side
-from cython.cimports.instrument.refine.queues import queue_clear, queue_compact, queue_pop, queue_push, queue_used
+from cython.cimports.instrument.refine.ghosts import rejected_fan_records, revive_ghosts
+from cython.cimports.instrument.refine.order import TRIANGLE
+from cython.cimports.instrument.refine.queues import ghost_room, ghost_slot, ghosts_orphaned, queue_clear, queue_compact, queue_pop, queue_push, queue_used
 from cython.cimports.instrument.refine.state import T_CIRCUMCENTER, T_OFFCENTER, T_REJECTED, T_SEGMENT, Refiner, step_begins, step_undone, trace_full, trace_row
 from cython.cimports.libc.math import fabs, hypot, sqrt
 
@@ -395,6 +398,7 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
         step_undone(r, m.work)
         return NEED_ROOM
     order_rim(r, m, nb, d)  # Triangle circles the new vertex from e's destination
+    revive_ghosts(r, m, e, nb)  # a rejected point's queued triangles this vertex remakes
     rec: Index = m.seg[e]
     half: Index = new_record(segs, segs.marker[rec], segs.source[rec], segs.ends[rec, 0], segs.ends[rec, 1])
     v: Index = new_vertex(m, px, py, V_SEGMENT, segs.marker[rec], e0, e1, e0, split, 0.0)
@@ -444,6 +448,8 @@ def split_encroached(r: Refiner, m: Mesh, segs: Subsegments, triangles: cython.b
     v: Index
     status: cython.int
     fresh: Index
+    deleted: cython.longlong
+    ok: cython.bint
     while r.enc_live > 0 and r.budget != 0:
         # over the free slots to the next record, in a loop of its own: the
         # pool is mostly free slots, and each call scans it from the start
@@ -471,7 +477,11 @@ def split_encroached(r: Refiner, m: Mesh, segs: Subsegments, triangles: cython.b
         if e >= 0 and not r.cfg.diametral:
             u = r.enc[i, 0]
             v = r.enc[i, 1]
-            if not chew_delete(r, m, segs, e):
+            deleted = m.work[C_DELETED_VERTEX]
+            ok = chew_delete(r, m, segs, e)
+            if m.work[C_DELETED_VERTEX] != deleted:  # Triangle reuses their records first
+                ghosts_orphaned(r, m)
+            if not ok:
                 return NEED_ROOM
             if m.stamp[e // 3] != r.enc[i, 3] or m.corner[lnext(e)] != u:  # a deletion re-made it
                 e = find_edge(m, u, v)
@@ -661,7 +671,7 @@ def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cyth
     n: Index
     nb: Index
     n, nb = collect_cavity(r, m, px, py, start, second, -1)
-    if not has_room(r, m, nb):
+    if not has_room(r, m, nb) or not ghost_room(r, nb):
         forget_cavity(r, m, n)
         step_undone(r, m.work)
         return NEED_ROOM
@@ -677,6 +687,8 @@ def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cyth
             encroached += 1
             queue_side(r, m, r.bnd[k, 4], True)
     if encroached:
+        if r.cfg.strategy == TRIANGLE and status == LOC_INSIDE and rejected_fan_records(r, m, e, nb):
+            queue_rejected_fan(r, m, segs, nb, px, py)  # Triangle queued them before it rejected the point
         forget_cavity(r, m, n)
         m.work[C_REJECTED] += 1
         m.work[C_UNDONE] += nb
@@ -787,13 +799,17 @@ def refine(r: Refiner, m: Mesh, segs: Subsegments) -> cython.int:
         r.taken += 1
         i = queue_pop(r)
         t = r.htri[i]
+        stamp = r.hstamp[i]
+        if t < 0:  # a rejected insertion's entry: its triangle, if remade (queues.ghost_slot)
+            t = ghost_slot(r, m, -1 - t)
+            stamp = m.stamp[t] if t >= 0 else 0
         m.work[C_QUEUE_POP] += 1
-        if m.stamp[t] != r.hstamp[i]:
+        if t < 0 or m.stamp[t] != stamp:
             m.work[C_STALE_POP] += 1
             continue
         r.current_key = r.hkey[i]
         r.current = t
-        r.current_stamp = r.hstamp[i]
+        r.current_stamp = stamp
 
 
 def tally_encroached(r: Refiner, m: Mesh, segs: Subsegments) -> None:

@@ -49,6 +49,11 @@ cdef class Refiner:
     cdef public Index top_bucket     # the highest non-empty bucket, -1 none
     cdef public Index log_length     # bucket log entries (live, served and stale)
     cdef public Index compact_at     # compact the queue when it grows past this
+    # entries a rejected insertion queued (queues.queue_push_ghost): rows (org, dest, the vertex
+    # that may revive them, Triangle's record (ghosts.py), its orientation or GHOST_LIVE); a
+    # bucket log entry with htri = -1 - row is one of them
+    cdef public long long[:, ::1] ghost
+    cdef public Index nghost         # rows in use
     # the encroached-subsegment pool (encroach.py)
     cdef public long long[:, ::1] enc  # (E, 4): ends (-1: free slot), edge, its triangle's stamp
     cdef public Index enc_live       # records in the pool
@@ -64,6 +69,8 @@ cdef class Refiner:
     cdef public long long[:, ::1] bnd  # cavity rim edges: (outer twin, org, dest, record, edge)
     cdef public double[:, ::1] bval  # and the area bound and attribute each passes on
     cdef public double[::1] carry    # the area bound each cavity triangle passes on (cavity.py)
+    cdef public long long[:, ::1] lineage  # ghosts.py: the flips' stack (edge, record, orientation)
+    cdef public long long[:, ::1] fan_rec  # ghosts.py: each fan triangle's record and orientation
     # the trace (empty: off)
     cdef public long long[:, ::1] trace  # rows: kind, created, deleted, walk steps, queue length
     cdef public Index ntrace

@@ -85,6 +85,8 @@ class Refiner:
         self.top_bucket = -1
         self.log_length = 0
         self.compact_at = 0
+        self.ghost = np.empty((256, 5), dtype=np.int64)  # written before read, as the queue
+        self.nghost = 0
         self.enc = np.empty((records, 4), dtype=np.int64)
         self.enc_live = 0
         self.enc_fresh = 0
@@ -98,6 +100,8 @@ class Refiner:
         self.bnd = np.empty((slots, 5), dtype=np.int64)
         self.bval = np.empty((slots, 2))
         self.carry = np.empty(slots)
+        self.lineage = np.empty((slots, 3), dtype=np.int64)
+        self.fan_rec = np.empty((slots, 2), dtype=np.int64)
         self.trace = np.zeros((1024 if trace else 0, 5), dtype=np.int64)
         self.ntrace = 0
 

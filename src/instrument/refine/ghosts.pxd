@@ -1,0 +1,6 @@
+# Triangle's triangle records through an insertion (ghosts.py).
+from instrument.core.mesh cimport Index, Mesh
+from instrument.refine.state cimport Refiner
+
+cpdef bint rejected_fan_records(Refiner r, Mesh m, Index e, Index nb) noexcept nogil
+cpdef void revive_ghosts(Refiner r, Mesh m, Index e, Index nb) noexcept nogil
