@@ -20,6 +20,7 @@ Under ``pQ`` each ignored vertex is checked to leave the mesh as it is too.
     python scripts/hole_start_edge.py --polygons 100 --seed 3 --verbose
     python scripts/hole_start_edge.py --regression     # the two holes of regressions/hole-at-two-vertices.json
     python scripts/hole_start_edge.py --pairs pQ       # two holes at two vertices, 12 pairs per polygon
+    python scripts/hole_start_edge.py --without-segments   # the same vertices without their segments
 
 ``--pairs`` asks whether Triangle's mesh for two hole points at two vertices
 is its mesh for some combination of choices made for each point alone:
@@ -209,6 +210,24 @@ def survey(n_polygons: int, seed: int, verbose: bool) -> None:
     print("  the pair differs from the input as given's under:", dict(moved_by))
 
 
+def without_segments(n_polygons: int, seed: int) -> None:
+    """The ignored pair for the vertices alone against the PSLG's: does segment insertion move it?"""
+    rng = np.random.default_rng(seed)
+    tally = Counter()
+    for _ in range(n_polygons):
+        base = polygon(rng)
+        alone, pslg = ignored_hull_vertices({"vertices": base["vertices"]}), ignored_hull_vertices(base)
+        if alone is None or pslg is None:
+            tally["polygons Triangle crashed on"] += 1
+            continue
+        tally["polygons"] += 1
+        tally["vertices alone: ours' rule names the ignored pair"] += alone[0] == alone[1]
+        tally["with the segments: the ignored pair is another"] += pslg[0] != alone[0]
+    print(f"{n_polygons} polygons, seed {seed}:")
+    for k, v in tally.items():
+        print(f"  {k}: {v}")
+
+
 def touching(xy: np.ndarray, tris, p) -> list[np.ndarray]:
     """A point just inside each triangle whose closed interior holds ``p``."""
     out = []
@@ -307,9 +326,12 @@ def main() -> None:
     ap.add_argument("--verbose", action="store_true")
     ap.add_argument("--regression", action="store_true")
     ap.add_argument("--pairs", metavar="SWITCHES")
+    ap.add_argument("--without-segments", action="store_true")
     args = ap.parse_args()
     if args.regression:
         regression()
+    elif args.without_segments:
+        without_segments(args.polygons, args.seed)
     elif args.pairs:
         pairs(args.polygons, args.seed, args.pairs)
     else:
