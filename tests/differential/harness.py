@@ -56,16 +56,19 @@ def judge_outcomes(runners: Runners, case: Case, tri: Outcome, ours: Outcome) ->
         return verdict
     # a hole or region point exactly at a vertex (under i: on a segment):
     # Triangle's answer is that of the point in one of the triangles it touches
-    # (or left out), which one its sampled walk decides (located.py); ours
+    # (or, on the hull, left out), which one its sampled walk and where its
+    # start edge was left decide (located.py); ours
     # passes if it agrees in every check with one
     bare = {k: v for k, v in case.input.items() if k not in ("holes", "regions")}
     cdt = runners.run_triangle(bare, located.cdt_switches(case.switches))
     if cdt.status != "ok":
         return verdict
+    judged = []  # many placements give the same mesh: each is judged once
     for alt in located.alternatives(case, cdt.result):
         alt_tri = runners.run_triangle(alt.input, alt.switches)
-        if alt_tri.status != "ok":
+        if alt_tri.status != "ok" or any(same_mesh(alt_tri, seen) for seen in judged):
             continue
+        judged.append(alt_tri)
         alt_verdict = judge(case, alt_tri, ours, spread=lambda alt=alt: spread_counts(runners, alt))
         if alt_verdict.ok:
             alt_verdict.notes["point_placed"] = {
@@ -85,6 +88,14 @@ def same_outcome(a: Outcome, b: Outcome) -> bool:
     ra, rb = a.result, b.result
     return ra.keys() == rb.keys() and all(np.array_equal(np.asarray(ra[k]), np.asarray(rb[k]), equal_nan=True)
                                          for k in ra)
+
+
+def same_mesh(a: Outcome, b: Outcome) -> bool:
+    """Whether two runs that both made a mesh made the same one (the hole
+    and region points they copy to the output aside)."""
+    ra = {k: v for k, v in a.result.items() if k not in ("holes", "regions")}
+    rb = {k: v for k, v in b.result.items() if k not in ("holes", "regions")}
+    return same_outcome(Outcome("ok", ra), Outcome("ok", rb))
 
 
 def run_case(runners: Runners, case: Case, previous: Case | None = None, confirmed: dict | None = None,

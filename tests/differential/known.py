@@ -98,15 +98,6 @@ DEFECTS += [
 
 DEFECTS += [
     Defect(
-        "hole-at-vertex-no-placement",
-        "two hole points each exactly at a vertex (a triangle and an 8-gon, holes at vertex 1 of the "
-        "one and vertex 4 of the other; campaign seed 2612, regressions/hole-at-two-vertices.json) under pQ: "
-        "Triangle keeps 6 triangles (area 0.0048), ours 11 (0.1227), and ours agrees with Triangle's mesh for no "
-        "placement of the points in the triangles around their vertices (located.py); not yet explained",
-        lambda c, f, n: n.get("point_placed") == "ours agrees with Triangle for no placement around the vertex"
-        and c.family == "hole-points-off",
-    ),
-    Defect(
         "strip-order-size",
         "a strip 0.00217 high along a unit square's bottom (a segment from x = 0.0054 to the right side) under "
         "pq32.5: ours makes 2013 to 2076 vertices over the re-expressions, Triangle 2000 to 2029, so the "
