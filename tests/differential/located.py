@@ -1,5 +1,5 @@
-"""Hole and region points exactly at an input vertex (and, under ``i``, on an
-input segment): the inputs with each such point moved into one of the
+"""Hole and region points exactly at an input vertex or on an input segment:
+the inputs with each such point moved into one of the
 triangles it touches, or, at a hull vertex (under ``i`` on a hull segment),
 left out.
 
@@ -8,8 +8,11 @@ walk, and Triangle's walk starts from triangles it samples at random: the
 same polygon with a hole at one of its vertices eats the polygon or only a
 triangle outside it depending on how many far-away points are appended to
 the input (19 of 40 random star polygons under ``pQ`` changed their answer
-over 0 to 5 appended points; docs/differential.md).  After incremental
-insertion (``i``) the same holds for a point on a segment.
+over 0 to 5 appended points; docs/differential.md).  The same holds for a
+point on a segment: after incremental insertion (``i``), and after divide
+and conquer too (a 14-gon with a hole at the midpoint of one side, campaign
+seed 2701, under ``pQ``: Triangle keeps 12, 0, 12, 0, 0, 0 triangles with 0
+to 5 far-away points appended; ``regressions/hole-on-segment-divconq.json``).
 
 A point is located at all only if it lies strictly left of the hull edge
 Triangle's point location starts from; a point on that edge's line is
@@ -58,15 +61,15 @@ MAX_ALTERNATIVES = 64
 
 
 def points_to_place(case: Case) -> list[tuple[str, int]]:
-    """(key, row) of every hole or region point exactly at an input vertex,
-    and under ``i`` also exactly on an input segment (``p`` without ``r``:
-    only then are holes and regions located)."""
+    """(key, row) of every hole or region point exactly at an input vertex
+    or exactly on an input segment (``p`` without ``r``: only then are holes
+    and regions located)."""
     sw = read_switches(case.switches)
     if not sw.p or sw.r:
         return []
     xy = np.asarray(case.input["vertices"], dtype=np.float64).reshape(-1, 2)
     v = {tuple(p) for p in xy.tolist()}
-    segs = np.asarray(case.input.get("segments", np.zeros((0, 2))), dtype=np.int64).reshape(-1, 2) if sw.i else ()
+    segs = np.asarray(case.input.get("segments", np.zeros((0, 2))), dtype=np.int64).reshape(-1, 2)
     out = []
     for key in ("holes", "regions"):
         a = np.asarray(case.input.get(key, np.zeros((0, 2))), dtype=np.float64)
