@@ -120,18 +120,6 @@ DEFECTS += [
     ),
 ]
 
-DEFECTS += [
-    Defect(
-        "recovered-segment-off-chain",
-        "two crossing segments, (0.5, 0.125)-(9.5e-7, 0) and (9.5e-7, 6.1e-151)-(0.125, 9.5e-7), under pcQ: "
-        "the second's piece lies in ours' mesh but not as a chain of collinear subsegments (an invalid mesh; "
-        "campaign seed 2613 at b983662, shrunk, regressions/recovered-segment-off-chain.json); the crossing "
-        "lies within 1e-150 of the second segment's end; not yet explained",
-        lambda c, f, n: f.kind == "invalid-mesh" and "is not a chain of collinear subsegments" in f.message
-        and c.family == "crossing-segments" and not read_switches(c.switches).q,
-    ),
-]
-
 BY_ID = {d.id: d for d in DEFECTS}
 
 
