@@ -453,3 +453,52 @@ def test_same_results_in_pure_python():
     assert out["incircle_fast"] == [incircle_fast(*c).hex() for c in cases]
     for c, h in zip(cases, out["incircle"]):
         assert sign(float.fromhex(h)) == sign(exact_incircle(*c))
+
+
+# ---------------------------------------------------------------------------
+# dot_sign (segment recovery's "is this vertex between the segment's ends")
+# ---------------------------------------------------------------------------
+def exact_dot(ax, ay, bx, by, cx, cy, dx, dy) -> Fraction:
+    ax, ay, bx, by, cx, cy, dx, dy = map(Fraction, (ax, ay, bx, by, cx, cy, dx, dy))
+    return (bx - ax) * (dx - cx) + (by - ay) * (dy - cy)
+
+
+def _dot_cases() -> list[tuple]:
+    """Random, exactly perpendicular, nearly perpendicular (an ulp off), and
+    out of the filter's range (tiny and huge differences, both at once)."""
+    rng = np.random.default_rng(11)
+    cases = [tuple(map(float, r)) for r in rng.uniform(-1, 1, (200, 8))]
+    cases += [tuple(map(float, r)) for r in rng.integers(-3, 4, (100, 8))]
+    for ax, ay, bx, by, ox, oy in rng.uniform(-1, 1, (100, 6)).tolist():
+        # d - c perpendicular to b - a, then nudged: the sign flips around 0
+        for u in (-2, -1, 0, 1, 2):
+            cases.append((ax, ay, bx, by, ox, oy, ox - (by - ay), nudge(oy + (bx - ax), u)))
+    cases += [
+        (2.0**-20, 2.0**-499, 0.125, 2.0**-20, 2.0**-20, 2.0**-499, 2.0**-20, 0.0),  # the recovery defect's
+        (0.0, 0.0, 5e-324, 5e-324, 0.0, 0.0, -5e-324, 1e-323),
+        (0.0, 0.0, 2.0**600, 2.0**-600, 0.0, 0.0, -(2.0**-600), 2.0**600),
+        (1e300, -1e300, -1e300, 1e300, 1.0, 2.0, 3.0, 4.0),
+        (0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 1.0, -1.0),
+    ]
+    return cases
+
+
+def test_dot_sign_matches_fractions():
+    for c in _dot_cases():
+        assert P.dot_sign(*c) == sign(exact_dot(*c)), c
+
+
+def test_dot_sign_same_in_pure_python():
+    cases = _dot_cases()
+    script = (
+        "import json, sys\nfrom instrument import purepython\nfrom instrument.core import predicates as P\n"
+        "cases = json.loads(sys.stdin.read())\n"
+        "print(json.dumps({'signs': [P.dot_sign(*c) for c in cases], 'compiled': purepython.is_compiled(P)}))\n"
+    )
+    env = dict(os.environ, RUPPERT_PURE_PYTHON="1")
+    proc = subprocess.run([sys.executable, "-c", script], input=json.dumps(cases), capture_output=True, text=True,
+                          env=env, timeout=120)
+    assert proc.returncode == 0, proc.stderr
+    out = json.loads(proc.stdout)
+    assert not out["compiled"]
+    assert out["signs"] == [sign(exact_dot(*c)) for c in cases]

@@ -12,6 +12,8 @@ cdef double orient2d_adaptive(double ax, double ay, double bx, double by, double
 cdef double incircle_adaptive(double ax, double ay, double bx, double by, double cx, double cy,
                               double dx, double dy) noexcept nogil
 cpdef double orient2d_fast(double ax, double ay, double bx, double by, double cx, double cy) noexcept nogil
+cpdef int dot_sign(double ax, double ay, double bx, double by, double cx, double cy,
+                   double dx, double dy) noexcept nogil
 cpdef double incircle_fast(double ax, double ay, double bx, double by, double cx, double cy,
                            double dx, double dy) noexcept nogil
 

@@ -41,7 +41,7 @@ from cython.cimports.instrument.core.insert import flip, lawson, should_flip, sp
 from cython.cimports.instrument.core.locate import LOC_INSIDE, LOC_ON_EDGE, LOC_ON_VERTEX, walk
 from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, Index, Mesh, lnext, lprev, set_parent, spare_triangles
 from cython.cimports.instrument.core.navigate import find_edge, remember_corners, vertex_edge
-from cython.cimports.instrument.core.predicates import orient2d
+from cython.cimports.instrument.core.predicates import dot_sign, orient2d
 from cython.cimports.instrument.core.scaling import unit_scale
 from cython.cimports.instrument.core.status import DONE, FAILED, NEED_BUFFER, NEED_ROOM
 from cython.cimports.instrument.core.subsegments import Subsegments, new_record
@@ -571,6 +571,23 @@ def _near(xy: cython.double[:, ::1], v: Index, px: cython.double, py: cython.dou
     return fabs(xy[v, 0] - px) <= tol and fabs(xy[v, 1] - py) <= tol
 
 
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _inside(xy: cython.double[:, ::1], u: Index, w: Index, v: Index) -> cython.bint:
+    """Does ``v`` lie strictly between ``u`` and ``w`` along the line
+    ``u -> w`` (its projection on the line, exactly)?  A vertex taken for a
+    crossing becomes an inner vertex of a segment's chain, and a chain is
+    straight only if its vertices come in order along the segment."""
+    ux: cython.double = xy[u, 0]
+    uy: cython.double = xy[u, 1]
+    wx: cython.double = xy[w, 0]
+    wy: cython.double = xy[w, 1]
+    vx: cython.double = xy[v, 0]
+    vy: cython.double = xy[v, 1]
+    return dot_sign(ux, uy, vx, vy, ux, uy, wx, wy) > 0 and dot_sign(vx, vy, wx, wy, ux, uy, wx, wy) > 0
+
+
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
@@ -686,6 +703,21 @@ def _split_at_crossing(
     crossing vertex made earlier is only nearly on its lines, so later
     segments through the same point would otherwise cross them again a
     rounding error away, for ever.
+
+    The tolerance is relative to the point's coordinates, so near one end
+    of a segment several vertices can be within it, and the one taken must
+    become an inner vertex of the segment(s) rerouted through it: an end of
+    ``c`` must lie strictly between ``a`` and ``b`` along ``a -> b``; ``a``
+    or ``b``, strictly between the ends of ``c`` along ``c``; any other
+    vertex, both.  The first that does is taken (the four ends first);
+    only when none does is the first one near taken, as before.  (Two
+    segments crossing 2^-497 from the end of one, at (2^-20, 2^-499): the
+    rounded crossing was within 2^-68 of the other's end (2^-20, 0), which
+    was taken; it lies behind (2^-20, 2^-499) along the first segment, and
+    the first segment's chain went back through it.  The geometry always
+    leaves a choice: if an end of ``c`` near the crossing lies behind ``a``
+    along ``a -> b``, then ``a`` lies strictly inside ``c``, for segments
+    that are not parallel.)
     """
     xy = m.xy
     nv: Index = m.nvert
@@ -715,13 +747,25 @@ def _split_at_crossing(
         t = crossing_parameter(
             xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[right, 0], xy[right, 1], xy[left, 0], xy[left, 1]
         )
-    if _near(xy, right, px, py, tol):
+    near_right: cython.bint = _near(xy, right, px, py, tol)
+    near_left: cython.bint = _near(xy, left, px, py, tol)
+    near_a: cython.bint = _near(xy, a, px, py, tol)
+    near_b: cython.bint = _near(xy, b, px, py, tol)
+    if near_right and _inside(xy, a, b, right):
         return right, False
-    if _near(xy, left, px, py, tol):
+    if near_left and _inside(xy, a, b, left):
         return left, False
-    if _near(xy, a, px, py, tol):
+    if near_a and _inside(xy, right, left, a):
         return a, True
-    if _near(xy, b, px, py, tol):
+    if near_b and _inside(xy, right, left, b):
+        return b, True
+    if near_right:
+        return right, False
+    if near_left:
+        return left, False
+    if near_a:
+        return a, True
+    if near_b:
         return b, True
     status: cython.int
     e: Index
@@ -734,6 +778,7 @@ def _split_at_crossing(
     # as near another vertex (one nearly on both lines: a corner of the
     # triangle it falls in, or across c from it): that vertex
     near_v: Index
+    first_near: Index = -1
     for k in range(5):
         if k < 3:
             near_v = m.corner[3 * (e // 3) + k]
@@ -744,7 +789,12 @@ def _split_at_crossing(
         else:
             break
         if _near(xy, near_v, px, py, tol):
-            return near_v, True
+            if _inside(xy, a, b, near_v) and _inside(xy, right, left, near_v):
+                return near_v, True
+            if first_near < 0:
+                first_near = near_v
+    if first_near >= 0:
+        return first_near, True
     half: Index = new_record(segs, segs.marker[r], segs.source[r], segs.ends[r, 0], segs.ends[r, 1])
     if half < 0:
         return -1, False
