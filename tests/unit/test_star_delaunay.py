@@ -1,7 +1,7 @@
 """Chew's randomized triangulation of a deleted vertex's star
 (instrument.refine.star_delaunay) makes the scan's triangles.
 
-The scan (``scan_apex`` per base edge, recursing on both sides, as
+The scan (``_scan_apex`` per base edge, recursing on both sides, as
 ``deletion._fill_polygon`` does) is the reference: on every star of the
 Delaunay triangulations below, ``delaunay_star`` gives the same triangles,
 cocircular ties included, or leaves the star to the scan (-1); on the
@@ -28,12 +28,12 @@ from instrument import counters
 from instrument.check import check_mesh
 from instrument.core.mesh import V_DEAD, V_FREE
 from instrument.core.navigate import build_vertex_edges, find_edge
-from instrument.core.predicates import orient2d
+from instrument.core.predicates import incircle, orient2d
 from instrument.core.status import DONE
 from instrument.core.subsegments import Subsegments
 from instrument.counters import C_INCIRCLE
 from instrument.refine.deletion import SCAN_DEGREE, delete_free_vertex
-from instrument.refine.star_delaunay import delaunay_star, scan_apex
+from instrument.refine.star_delaunay import delaunay_star
 from meshkit import as_result, corner_sets, problems, refiner, triangulated
 
 
@@ -44,6 +44,18 @@ def _chain(star: list[int]) -> np.ndarray:
     return np.array([star[0]] + [star[d - i] for i in range(1, d)], dtype=np.int64)
 
 
+def _scan_apex(xy, chain, i, j, work) -> int:
+    """The scan's choice over the base chain[i] -> chain[j] (the deletion's
+    loop): the first position whose circle through the base holds none of
+    the other positions i + 1 .. j - 1 strictly inside."""
+    k = i + 1
+    for q in range(i + 2, j):
+        work[C_INCIRCLE] += 1
+        if incircle(*xy[chain[i]], *xy[chain[j]], *xy[chain[k]], *xy[chain[q]]) > 0:
+            k = q
+    return k
+
+
 def _scanned(xy, chain, work) -> tuple[set, bool]:
     """The scan's triangles (as sets of chain positions), and whether they
     are all counter-clockwise."""
@@ -52,7 +64,7 @@ def _scanned(xy, chain, work) -> tuple[set, bool]:
         i, j = pending.pop()
         if j == i + 1:
             continue
-        k = scan_apex(xy, chain, i, j, work)
+        k = _scan_apex(xy, chain, i, j, work)
         valid &= orient2d(*xy[chain[k]], *xy[chain[i]], *xy[chain[j]]) > 0
         out.add(frozenset((i, j, k)))
         pending += [(i, k), (k, j)]

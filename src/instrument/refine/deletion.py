@@ -19,14 +19,15 @@ from __future__ import annotations
 import cython
 from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, V_DEAD, V_FREE, Index, Mesh, bond, kill_triangle, lnext, lprev, new_triangle, spare_triangles
 from cython.cimports.instrument.core.navigate import find_edge, remember_corners
+from cython.cimports.instrument.core.predicates import incircle
 from cython.cimports.instrument.core.scaling import scaled_dot
 from cython.cimports.instrument.core.status import DONE, FAILED, NEED_ROOM
 from cython.cimports.instrument.core.subsegments import Subsegments
-from cython.cimports.instrument.counters import C_CREATED, C_DELETED, C_DELETED_VERTEX
+from cython.cimports.instrument.counters import C_CREATED, C_DELETED, C_DELETED_VERTEX, C_INCIRCLE
 from cython.cimports.instrument.refine.cavity import inherit, inherited
 from cython.cimports.instrument.refine.criteria import test_triangle
 from cython.cimports.instrument.refine.queues import queue_used
-from cython.cimports.instrument.refine.star_delaunay import delaunay_star, scan_apex
+from cython.cimports.instrument.refine.star_delaunay import delaunay_star
 from cython.cimports.instrument.refine.state import T_DELETED, Refiner, trace_row
 
 # SCAN_DEGREE (deletion.pxd): stars of that many vertices or more go to
@@ -40,47 +41,62 @@ if not cython.compiled:
 @cython.exceptval(check=False)
 def _fill_polygon(
     r: Refiner, m: Mesh, chain: cython.longlong[:], outer: cython.longlong[:], outer_seg: cython.longlong[:],
-    count: Index, stack: cython.longlong[:], tv: cython.longlong[:], nb: cython.longlong[:],
-    local: cython.longlong[:], base: Index,
+    count: Index, base: Index,
 ) -> tuple[Index, Index]:
     """Triangulate the polygon ``chain[0..count-1]`` whose other vertices lie
     left of ``chain[0] -> chain[count-1]``: each base edge takes the vertex
     whose circle through it holds no other candidate (the constrained
     Delaunay choice), then both sides recurse.  ``outer[i]`` is the outside
     twin of the polygon edge ``chain[i] chain[i+1]``.  With ``base >= 0``
-    the choices are read from star_delaunay's local triangulation
-    ``tv``/``nb`` (``base``: its edge on the polygon's base; ``local`` holds
-    each pending base edge's local edge) instead of scanned.  New triangles
-    go on ``r.fan``; returns (base edge of the first, how many)."""
+    the choices are read from star_delaunay's local triangulation in
+    ``r.bnd``'s columns 0 and 1 (``base``: its edge on the polygon's base;
+    column 4 holds each pending base edge's local edge) instead of scanned.
+    The stack (3 per level, ``count`` levels at most) is column 2.  New
+    triangles go on ``r.fan``; returns (base edge of the first, how many)."""
+    bnd: cython.longlong[:, ::1] = r.bnd
     root: Index = -1
     made: Index = 0
-    stack[0] = 0
-    stack[1] = count - 1
-    stack[2] = -1
+    bnd[0, 2] = 0
+    bnd[1, 2] = count - 1
+    bnd[2, 2] = -1
     if base >= 0:
-        local[0] = base
+        bnd[0, 4] = base
     sp: Index = 1
     i: Index
     j: Index
     pe: Index
+    ci: Index
+    cj: Index
     k: Index
+    ck: Index
+    cq: Index
+    q: Index
     le: Index
     t: Index
     while sp > 0:
         sp -= 1
-        i = stack[3 * sp]
-        j = stack[3 * sp + 1]
-        pe = stack[3 * sp + 2]
+        i = bnd[3 * sp, 2]
+        j = bnd[3 * sp + 1, 2]
+        pe = bnd[3 * sp + 2, 2]
         if j == i + 1:  # a polygon edge: link to the outside
             bond(m, pe, outer[i])
             m.seg[pe] = cython.cast(cython.int, outer_seg[i])
             continue
         le = -1
-        if base < 0:
-            k = scan_apex(m.xy, chain, i, j, m.work)
+        if base < 0:  # the scan
+            ci = chain[i]
+            cj = chain[j]
+            k = i + 1
+            for q in range(i + 2, j):
+                m.work[C_INCIRCLE] += 1
+                ck = chain[k]
+                cq = chain[q]
+                if incircle(m.xy[ci, 0], m.xy[ci, 1], m.xy[cj, 0], m.xy[cj, 1], m.xy[ck, 0], m.xy[ck, 1],
+                            m.xy[cq, 0], m.xy[cq, 1]) > 0.0:
+                    k = q
         else:  # local edge i -> j, its apex k
-            le = local[sp]
-            k = tv[le]
+            le = bnd[sp, 4]
+            k = bnd[le, 0]
         t = new_triangle(m, chain[k], chain[i], chain[j])
         m.work[C_CREATED] += 1
         r.fan[made] = t
@@ -90,15 +106,15 @@ def _fill_polygon(
             root = 3 * t
         else:
             bond(m, 3 * t, pe)
-        stack[3 * sp] = i
-        stack[3 * sp + 1] = k
-        stack[3 * sp + 2] = 3 * t + 2
-        stack[3 * sp + 3] = k
-        stack[3 * sp + 4] = j
-        stack[3 * sp + 5] = 3 * t + 1
+        bnd[3 * sp, 2] = i
+        bnd[3 * sp + 1, 2] = k
+        bnd[3 * sp + 2, 2] = 3 * t + 2
+        bnd[3 * sp + 3, 2] = k
+        bnd[3 * sp + 4, 2] = j
+        bnd[3 * sp + 5, 2] = 3 * t + 1
         if base >= 0:  # the twins of k -> i and j -> k
-            local[sp] = nb[lprev(le)]
-            local[sp + 1] = nb[lnext(le)]
+            bnd[sp, 4] = bnd[lprev(le), 1]
+            bnd[sp + 1, 4] = bnd[lnext(le), 1]
         sp += 2
     return root, made
 
@@ -179,24 +195,15 @@ def delete_free_vertex(r: Refiner, m: Mesh, segs: Subsegments, e0: Index) -> cyt
     for i in range(d - 1):  # records too: vslot must be all -1 again after
         rec[i] = ring_seg[i]
         ring_seg[i] = -1
-    # the fill's stack (3 per level, d levels at most) in bnd's free column
-    stack: cython.longlong[:] = r.bnd[:, 2]
     root: Index
     made: Index
-    base: Index
-    tv: cython.longlong[:]
-    nb: cython.longlong[:]
-    local: cython.longlong[:]
+    base: Index = -1
     if d >= SCAN_DEGREE:
         # a large star: its triangles from Chew's algorithm (scratch: bnd's
-        # free columns and fan, whose outside twins are in w now)
-        tv = r.bnd[:, 0]
-        nb = r.bnd[:, 1]
-        local = r.bnd[:, 4]
-        base = delaunay_star(m.xy, chain, d, m.xy[v, 0], m.xy[v, 1], tv, nb, r.fan, stack, local, m.work)
-        root, made = _fill_polygon(r, m, chain, w, rec, d, stack, tv, nb, local, base)
-    else:  # scanned (the local views are not read: the stack stands in)
-        root, made = _fill_polygon(r, m, chain, w, rec, d, stack, stack, stack, stack, -1)
+        # columns but 3, the records, and fan, whose outside twins are in w now)
+        base = delaunay_star(m.xy, chain, d, m.xy[v, 0], m.xy[v, 1], r.bnd[:, 0], r.bnd[:, 1], r.fan, r.bnd[:, 2],
+                             r.bnd[:, 4], m.work)
+    root, made = _fill_polygon(r, m, chain, w, rec, d, base)
     bond(m, root, base_outer)
     m.seg[root] = cython.cast(cython.int, base_seg)
     # vslot is all -1 again here: map each star vertex to its place (chain[i]

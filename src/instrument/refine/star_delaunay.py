@@ -376,23 +376,3 @@ def delaunay_star(xy: cython.double[:, ::1], chain: cython.longlong[:], n: Index
         if nb[e] < 0 and tv[lnext(e)] == 0 and tv[lprev(e)] == n - 1:
             return e
     return -1
-
-
-# The scan's choice: compiled, star_delaunay.pxd's inline definition (the
-# deletion inlines it); the same function for the pure-Python mode.
-if not cython.compiled:
-
-    def scan_apex(xy, chain, i: Index, j: Index, work) -> Index:
-        """The scan's choice over the base ``chain[i] -> chain[j]`` (the other
-        positions i + 1 .. j - 1 to its left): the first position whose circle
-        through the base holds none of the others strictly inside."""
-        ci = chain[i]
-        cj = chain[j]
-        k = i + 1
-        for q in range(i + 2, j):
-            work[C_INCIRCLE] += 1
-            ck = chain[k]
-            cq = chain[q]
-            if incircle(xy[ci, 0], xy[ci, 1], xy[cj, 0], xy[cj, 1], xy[ck, 0], xy[ck, 1], xy[cq, 0], xy[cq, 1]) > 0.0:
-                k = q
-        return k
