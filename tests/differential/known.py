@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .cases import Case
-from .oracles import Failure, ordinary_scale, read_switches
+from .oracles import Failure, read_switches
 
 
 @dataclass(frozen=True)
@@ -82,17 +82,6 @@ DEFECTS += [
             (c.family == "realworld" and n.get("vertices", {}).get("ours", 0) <= 1.05 * n.get("size_bound", 0))
             # point sets above 34 degrees (no segments: the hull's splits and rejections alone)
             or (read_switches(c.switches).angle >= 34 and not np.size(c.input.get("segments", ())))),
-    ),
-    Defect(
-        "mixed-scale-slow",
-        "quality refinement of inputs spanning 1e-303 to 1e300 misses the 20-second deadline: a 3 x 3 lattice at "
-        "1e300 with (1e-303, 2e-303) and (3e-303, -1e-303) under q28.6 makes 10119 vertices in 89 to 108 s "
-        "(Triangle, whose quality test overflows, keeps 11). The hull edge from (3e-303, -1e-303) to (2e300, 0) "
-        "and the lattice row y = 0 bound a sliver of angle 1e-603, split at ~2000 points along each side, and "
-        "free vertices in it reach degree 800: Chew's deletion re-triangulates such a star with a scan per "
-        "base edge, quadratic in the degree (1797 deletions made 180 million incircle tests in the first 6000 "
-        "Steiner points, 57 % of the time in the wide-range incircle, 13 % in the deletion itself)",
-        lambda c, f, n: f.kind == "ours-timeout" and not ordinary_scale(c.input),
     ),
 ]
 

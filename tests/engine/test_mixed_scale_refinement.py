@@ -36,6 +36,7 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
 CASE_Q30 = ROOT / "tests" / "differential" / "regressions" / "hang-q30-mixed-scale.json"
+CASE_SLIVER = ROOT / "tests" / "differential" / "regressions" / "mixed-scale-sliver-deletion.json"
 
 # hang-pq32.5Aei-regions (as the campaign wrote it): 12 vertices, 9 segments, 2 regions
 REGIONS_CASE = {
@@ -76,7 +77,8 @@ try:
 except instrument.TriangleError as exc:
     print(json.dumps({"error": type(exc).__name__, "message": str(exc)}))
 else:
-    print(json.dumps({"vertices": len(r["vertices"]), "problems": check_mesh(r, pslg=pslg, min_angle=min_angle)[:5]}))
+    print(json.dumps({"vertices": len(r["vertices"]), "problems": check_mesh(r, pslg=pslg, min_angle=min_angle)[:5],
+                      "incircle_tests": r.work["incircle_tests"], "deleted_vertices": r.work["deleted_vertices"]}))
 """
 
 
@@ -159,3 +161,19 @@ def test_an_edge_beside_far_corners_is_split_from_its_own_ends(switches):
     out = _run(FAR_CORNER_CASE, switches, 0.0)
     assert "error" not in out, out
     assert out["problems"] == [], out
+
+
+@pytest.mark.timeout(120)
+def test_deleting_free_vertices_of_high_degree_takes_linear_work():
+    """A 2 x 2 lattice at 1e299 with three points near 1e-303 under q28.6
+    (known.py's former mixed-scale-slow): 4,048 free vertices are deleted
+    before subsegment splits, stars of degree in the hundreds.  The scan
+    re-triangulated each star with a test per vertex per base edge (48.8
+    million incircle tests, 8.2 s); stars of 24 vertices or more now go to
+    Chew's randomized algorithm (refine/star_delaunay.py), the same mesh
+    with 2.1 million tests."""
+    out = _run({"path": str(CASE_SLIVER), "root": str(ROOT)}, "q28.6Q", 28.6)
+    assert "error" not in out, out
+    assert out["problems"] == [], out
+    assert out["vertices"] == 14507 and out["deleted_vertices"] == 4048
+    assert out["incircle_tests"] < 4_000_000, out

@@ -5,8 +5,13 @@ diametral circle are deleted, and each one's star is re-triangulated.
 A free vertex's star is a polygon; ``_fill_polygon`` triangulates it by
 taking, for each base edge, the vertex whose circle through the edge holds
 no other candidate (the constrained Delaunay choice), then recursing on
-both sides.  Deleting is only attempted from a side of the subsegment where
-no other segment meets it.
+both sides.  That scan is quadratic in the degree when the sides split
+unevenly, so a star of ``SCAN_DEGREE`` vertices or more is triangulated
+first by Chew's randomized algorithm (star_delaunay.py: the same triangles,
+ties included, in expected linear time) and ``_fill_polygon`` then reads
+each base edge's apex from it; a star that algorithm leaves (not Delaunay,
+degenerate) is scanned as before.  Deleting is only attempted from a side
+of the subsegment where no other segment meets it.
 """
 
 from __future__ import annotations
@@ -22,7 +27,13 @@ from cython.cimports.instrument.counters import C_CREATED, C_DELETED, C_DELETED_
 from cython.cimports.instrument.refine.cavity import inherit, inherited
 from cython.cimports.instrument.refine.criteria import test_triangle
 from cython.cimports.instrument.refine.queues import queue_used
+from cython.cimports.instrument.refine.star_delaunay import delaunay_star
 from cython.cimports.instrument.refine.state import T_DELETED, Refiner, trace_row
+
+# SCAN_DEGREE (deletion.pxd): stars of that many vertices or more go to
+# Chew's randomized algorithm first; the same constant for the pure-Python mode.
+if not cython.compiled:
+    SCAN_DEGREE = 24
 
 
 @cython.cfunc
@@ -30,19 +41,26 @@ from cython.cimports.instrument.refine.state import T_DELETED, Refiner, trace_ro
 @cython.exceptval(check=False)
 def _fill_polygon(
     r: Refiner, m: Mesh, chain: cython.longlong[:], outer: cython.longlong[:], outer_seg: cython.longlong[:],
-    count: Index, stack: cython.longlong[:],
+    count: Index, base: Index,
 ) -> tuple[Index, Index]:
     """Triangulate the polygon ``chain[0..count-1]`` whose other vertices lie
     left of ``chain[0] -> chain[count-1]``: each base edge takes the vertex
     whose circle through it holds no other candidate (the constrained
     Delaunay choice), then both sides recurse.  ``outer[i]`` is the outside
-    twin of the polygon edge ``chain[i] chain[i+1]``.  New triangles go on
-    ``r.fan``; returns (base edge of the first, how many)."""
+    twin of the polygon edge ``chain[i] chain[i+1]``.  With ``base >= 0``
+    the choices are read from star_delaunay's local triangulation in
+    ``r.bnd``'s columns 0 and 1 (``base``: its edge on the polygon's base;
+    column 4 holds each pending base edge's local edge) instead of scanned.
+    The stack (3 per level, ``count`` levels at most) is column 2.  New
+    triangles go on ``r.fan``; returns (base edge of the first, how many)."""
+    bnd: cython.longlong[:, ::1] = r.bnd
     root: Index = -1
     made: Index = 0
-    stack[0] = 0
-    stack[1] = count - 1
-    stack[2] = -1
+    bnd[0, 2] = 0
+    bnd[1, 2] = count - 1
+    bnd[2, 2] = -1
+    if base >= 0:
+        bnd[0, 4] = base
     sp: Index = 1
     i: Index
     j: Index
@@ -52,26 +70,34 @@ def _fill_polygon(
     k: Index
     ck: Index
     cq: Index
+    q: Index
+    le: Index
     t: Index
     while sp > 0:
         sp -= 1
-        i = stack[3 * sp]
-        j = stack[3 * sp + 1]
-        pe = stack[3 * sp + 2]
+        i = bnd[3 * sp, 2]
+        j = bnd[3 * sp + 1, 2]
+        pe = bnd[3 * sp + 2, 2]
         if j == i + 1:  # a polygon edge: link to the outside
             bond(m, pe, outer[i])
             m.seg[pe] = cython.cast(cython.int, outer_seg[i])
             continue
-        ci = chain[i]
-        cj = chain[j]
-        k = i + 1
-        for q in range(i + 2, j):
-            m.work[C_INCIRCLE] += 1
-            ck = chain[k]
-            cq = chain[q]
-            if incircle(m.xy[ci, 0], m.xy[ci, 1], m.xy[cj, 0], m.xy[cj, 1], m.xy[ck, 0], m.xy[ck, 1], m.xy[cq, 0], m.xy[cq, 1]) > 0.0:
-                k = q
-        t = new_triangle(m, chain[k], ci, cj)
+        le = -1
+        if base < 0:  # the scan
+            ci = chain[i]
+            cj = chain[j]
+            k = i + 1
+            for q in range(i + 2, j):
+                m.work[C_INCIRCLE] += 1
+                ck = chain[k]
+                cq = chain[q]
+                if incircle(m.xy[ci, 0], m.xy[ci, 1], m.xy[cj, 0], m.xy[cj, 1], m.xy[ck, 0], m.xy[ck, 1],
+                            m.xy[cq, 0], m.xy[cq, 1]) > 0.0:
+                    k = q
+        else:  # local edge i -> j, its apex k
+            le = bnd[sp, 4]
+            k = bnd[le, 0]
+        t = new_triangle(m, chain[k], chain[i], chain[j])
         m.work[C_CREATED] += 1
         r.fan[made] = t
         made += 1
@@ -80,12 +106,15 @@ def _fill_polygon(
             root = 3 * t
         else:
             bond(m, 3 * t, pe)
-        stack[3 * sp] = i
-        stack[3 * sp + 1] = k
-        stack[3 * sp + 2] = 3 * t + 2
-        stack[3 * sp + 3] = k
-        stack[3 * sp + 4] = j
-        stack[3 * sp + 5] = 3 * t + 1
+        bnd[3 * sp, 2] = i
+        bnd[3 * sp + 1, 2] = k
+        bnd[3 * sp + 2, 2] = 3 * t + 2
+        bnd[3 * sp + 3, 2] = k
+        bnd[3 * sp + 4, 2] = j
+        bnd[3 * sp + 5, 2] = 3 * t + 1
+        if base >= 0:  # the twins of k -> i and j -> k
+            bnd[sp, 4] = bnd[lprev(le), 1]
+            bnd[sp + 1, 4] = bnd[lnext(le), 1]
         sp += 2
     return root, made
 
@@ -163,13 +192,18 @@ def delete_free_vertex(r: Refiner, m: Mesh, segs: Subsegments, e0: Index) -> cyt
     attr0: cython.double = attr[0]
     for i in range(d):  # the outside twins move to w's place: fan is the fill's output
         w[i] = ring[i] if i < d - 1 else -1
-    # the fill's stack (3 per level, d levels at most) in bnd's free column
     for i in range(d - 1):  # records too: vslot must be all -1 again after
         rec[i] = ring_seg[i]
         ring_seg[i] = -1
     root: Index
     made: Index
-    root, made = _fill_polygon(r, m, chain, w, rec, d, r.bnd[:, 2])
+    base: Index = -1
+    if d >= SCAN_DEGREE:
+        # a large star: its triangles from Chew's algorithm (scratch: bnd's
+        # columns but 3, the records, and fan, whose outside twins are in w now)
+        base = delaunay_star(m.xy, chain, d, m.xy[v, 0], m.xy[v, 1], r.bnd[:, 0], r.bnd[:, 1], r.fan, r.bnd[:, 2],
+                             r.bnd[:, 4], m.work)
+    root, made = _fill_polygon(r, m, chain, w, rec, d, base)
     bond(m, root, base_outer)
     m.seg[root] = cython.cast(cython.int, base_seg)
     # vslot is all -1 again here: map each star vertex to its place (chain[i]
@@ -194,19 +228,22 @@ def delete_free_vertex(r: Refiner, m: Mesh, segs: Subsegments, e0: Index) -> cyt
     j: Index
     u: Index
     uhi: Index
-    for i in range(1, made):
-        t = r.fan[i]
-        hi = slot[m.corner[3 * t + 1]]
-        lo = slot[m.corner[3 * t + 2]]
-        j = i - 1
-        while j > 0:
-            u = order[j - 1]
-            uhi = slot[m.corner[3 * u + 1]]
-            if uhi < hi or (uhi == hi and slot[m.corner[3 * u + 2]] > lo):
-                break
-            order[j] = u
-            j -= 1
-        order[j] = t
+    if made > SCAN_DEGREE:  # a large star: two counting sorts (bnd is free scratch now)
+        _sort_by_places(m, r.fan, made, slot, d, order, r.bnd[:, 2], r.bnd[:, 4])
+    else:  # a small one: insertion
+        for i in range(1, made):
+            t = r.fan[i]
+            hi = slot[m.corner[3 * t + 1]]
+            lo = slot[m.corner[3 * t + 2]]
+            j = i - 1
+            while j > 0:
+                u = order[j - 1]
+                uhi = slot[m.corner[3 * u + 1]]
+                if uhi < hi or (uhi == hi and slot[m.corner[3 * u + 2]] > lo):
+                    break
+                order[j] = u
+                j -= 1
+            order[j] = t
     slot[chain[0]] = -1
     for i in range(1, d):
         slot[chain[i]] = -1
@@ -223,6 +260,51 @@ def delete_free_vertex(r: Refiner, m: Mesh, segs: Subsegments, e0: Index) -> cyt
         for i in range(made):
             test_triangle(r, m, segs, r.fan[i])
     return DONE
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _sort_by_places(m: Mesh, fan: cython.longlong[:], made: Index, slot: cython.longlong[:], d: Index,
+                    out: cython.longlong[:], tmp: cython.longlong[:], count: cython.longlong[:]) -> cython.void:
+    """``out[:made - 1]`` = the triangles ``fan[1:made]`` in the deletion's
+    testing order: the place of their base org ascending, then of their
+    base dest descending (the pairs differ: one triangle per base), by two
+    stable counting sorts over the places 1 .. d, in time linear in the
+    degree where the insertion sort is quadratic."""
+    p: Index
+    i: Index
+    t: Index
+    running: Index
+    c: Index
+    for p in range(d + 2):  # by base dest, descending, into tmp
+        count[p] = 0
+    for i in range(1, made):
+        count[slot[m.corner[3 * fan[i] + 2]]] += 1
+    running = 0
+    for p in range(d + 1, -1, -1):
+        c = count[p]
+        count[p] = running
+        running += c
+    for i in range(1, made):
+        t = fan[i]
+        p = slot[m.corner[3 * t + 2]]
+        tmp[count[p]] = t
+        count[p] += 1
+    for p in range(d + 2):  # then stably by base org, ascending, into out
+        count[p] = 0
+    for i in range(made - 1):
+        count[slot[m.corner[3 * tmp[i] + 1]]] += 1
+    running = 0
+    for p in range(d + 2):
+        c = count[p]
+        count[p] = running
+        running += c
+    for i in range(made - 1):
+        t = tmp[i]
+        p = slot[m.corner[3 * t + 1]]
+        out[count[p]] = t
+        count[p] += 1
 
 
 @cython.cfunc
