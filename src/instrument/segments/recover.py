@@ -643,9 +643,9 @@ def _scouted_fits(
     px: cython.double, py: cython.double, tol: cython.double,
 ) -> cython.bint:
     """May the crossing be Triangle's point ``s`` rather than ``p``, the exact
-    crossing rounded once?  Only where ``s`` is within 2^-40 of the
-    coordinates' magnitude of ``p`` (far off means the formula lost its
-    bits: nearly parallel segments, an underflow), farther than ``_near``'s
+    crossing rounded once?  Only where ``s`` is within 2^-40 of ``p``'s
+    magnitude (far off means the formula lost its bits: nearly parallel
+    segments, an underflow, a crossing near the origin), farther than ``_near``'s
     tolerance from both ends of ``c`` (a crossing within rounding of an end
     is that end, as the exact path decides), and in the closed union of the
     two triangles beside ``c`` (so the split stays local as the exact point's
@@ -653,7 +653,10 @@ def _scouted_fits(
     xy = m.xy
     if not (fabs(sx) <= 1.7976931348623157e308 and fabs(sy) <= 1.7976931348623157e308):
         return False
-    big: cython.double = max(max(fabs(xy[right, 0]), fabs(xy[right, 1])), max(fabs(xy[left, 0]), fabs(xy[left, 1])))
+    # of p's own magnitude: a crossing 1e-147 from an end, at (3e-146,
+    # 4e-147) on a segment of length 1, is off by 1e-17 in doubles, which
+    # there passes the end (three such pairs could not be recovered)
+    big: cython.double = max(fabs(px), fabs(py))
     if fabs(sx - px) > 2.0**-40 * big or fabs(sy - py) > 2.0**-40 * big:
         return False
     if _near(xy, right, sx, sy, tol) or _near(xy, left, sx, sy, tol):
@@ -733,13 +736,20 @@ def _split_at_crossing(
     # relative to the point; the floor is one subnormal unit (an absolute
     # 1e-300 took every vertex of an input near 1e-300 for the crossing)
     tol: cython.double = 2.0**-48 * (fabs(px) + fabs(py)) + 2.0**-1074
+    # an end near the exact crossing is chosen by the rule above, from the
+    # exact crossing: Triangle's doubles point is used only away from them
+    # (taken first, it left some pairs crossing 1e-147 from an end unrecoverable)
+    near_right: cython.bint = _near(xy, right, px, py, tol)
+    near_left: cython.bint = _near(xy, left, px, py, tol)
+    near_a: cython.bint = _near(xy, a, px, py, tol)
+    near_b: cython.bint = _near(xy, b, px, py, tol)
     t: cython.double
     sx: cython.double
     sy: cython.double
     t, sx, sy = scouted_crossing(
         xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[right, 0], xy[right, 1], xy[left, 0], xy[left, 1]
     )
-    if t > 0.0 and _scouted_fits(m, c, right, left, sx, sy, px, py, tol):
+    if not (near_right or near_left or near_a or near_b) and t > 0.0 and _scouted_fits(m, c, right, left, sx, sy, px, py, tol):
         px = sx
         py = sy
         tol = 2.0**-48 * (fabs(px) + fabs(py)) + 2.0**-1074
@@ -747,10 +757,6 @@ def _split_at_crossing(
         t = crossing_parameter(
             xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[right, 0], xy[right, 1], xy[left, 0], xy[left, 1]
         )
-    near_right: cython.bint = _near(xy, right, px, py, tol)
-    near_left: cython.bint = _near(xy, left, px, py, tol)
-    near_a: cython.bint = _near(xy, a, px, py, tol)
-    near_b: cython.bint = _near(xy, b, px, py, tol)
     if near_right and _inside(xy, a, b, right):
         return right, False
     if near_left and _inside(xy, a, b, left):
