@@ -27,7 +27,7 @@ from cython.cimports.instrument.core.insert import flip
 from cython.cimports.instrument.core.locate import LOC_BLOCKED, LOC_FAILED, LOC_INSIDE, LOC_ON_EDGE, LOC_ON_VERTEX, line_walk, precise_walk
 from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, V_FREE, V_SEGMENT, Index, Mesh, is_ghost, kill_triangle, lnext, lprev
 from cython.cimports.instrument.core.navigate import edge_around, find_edge, remember_corners, vertex_edge
-from cython.cimports.instrument.core.predicates import orient2d
+from cython.cimports.instrument.core.predicates import incircle, orient2d
 from cython.cimports.instrument.core.scaling import unit_scale
 from cython.cimports.instrument.core.status import DONE, FAILED, NEED_ROOM, PAUSE, PRECISION
 from cython.cimports.instrument.core.subsegments import Subsegments, new_record
@@ -177,6 +177,20 @@ def _on_boundary(m: Mesh, x: Index) -> cython.bint:
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
+def _inside_across(m: Mesh, a: Index, b: Index, c: Index, e: Index) -> cython.bint:
+    """Is the vertex across edge ``e`` (not a subsegment, with a triangle
+    across) strictly inside the circle through ``a``, ``b``, ``c``
+    (counter-clockwise)?  False across a subsegment or the boundary."""
+    tw: Index = m.twin[e]
+    if tw == NO_EDGE or m.seg[e] != NO_SEG or is_ghost(m, tw // 3):
+        return False
+    x: Index = m.corner[tw]
+    return incircle(m.xy[a, 0], m.xy[a, 1], m.xy[b, 0], m.xy[b, 1], m.xy[c, 0], m.xy[c, 1], m.xy[x, 0], m.xy[x, 1]) > 0.0
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
 def _split_at_apex(r: Refiner, m: Mesh, segs: Subsegments, e: Index, f: Index, triangles: cython.bint) -> cython.int:
     """Split subsegment edge ``e`` (org o, dest d) at the existing vertex
     ``c``, the apex of its side ``f`` (``e`` or its twin), which lies on it
@@ -213,6 +227,16 @@ def _split_at_apex(r: Refiner, m: Mesh, segs: Subsegments, e: Index, f: Index, t
         bad = not (
             orient2d(m.xy[c, 0], m.xy[c, 1], m.xy[u, 0], m.xy[u, 1], m.xy[y, 0], m.xy[y, 1]) > 0.0
             and orient2d(m.xy[c, 0], m.xy[c, 1], m.xy[y, 0], m.xy[y, 1], m.xy[w, 0], m.xy[w, 1]) > 0.0
+        )
+        # ... and constrained Delaunay: the flip is no Lawson flip, and where
+        # y too lies near the line o d (a chain of nearly collinear points)
+        # it left c y or the far triangle's other edges with a vertex inside
+        # a circumcircle, which every later cavity takes for granted (an
+        # invalid mesh: check_mesh's "not locally Delaunay")
+        bad = bad or (
+            incircle(m.xy[c, 0], m.xy[c, 1], m.xy[u, 0], m.xy[u, 1], m.xy[y, 0], m.xy[y, 1], m.xy[w, 0], m.xy[w, 1]) > 0.0
+            or _inside_across(m, c, u, y, lnext(g))  # across u y (g runs w -> u, its apex y)
+            or _inside_across(m, c, y, w, lprev(g))  # across y w
         )
     if bad:
         return FAILED
