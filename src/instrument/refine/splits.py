@@ -27,9 +27,9 @@ from cython.cimports.instrument.core.insert import flip
 from cython.cimports.instrument.core.locate import LOC_BLOCKED, LOC_FAILED, LOC_INSIDE, LOC_ON_EDGE, LOC_ON_VERTEX, line_walk, precise_walk
 from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, V_FREE, V_SEGMENT, Index, Mesh, is_ghost, kill_triangle, lnext, lprev
 from cython.cimports.instrument.core.navigate import edge_around, find_edge, remember_corners, vertex_edge
-from cython.cimports.instrument.core.predicates import orient2d
+from cython.cimports.instrument.core.predicates import incircle, orient2d
 from cython.cimports.instrument.core.scaling import unit_scale
-from cython.cimports.instrument.core.status import DONE, NEED_ROOM, PAUSE, PRECISION
+from cython.cimports.instrument.core.status import DONE, FAILED, NEED_ROOM, PAUSE, PRECISION
 from cython.cimports.instrument.core.subsegments import Subsegments, new_record
 from cython.cimports.instrument.counters import (
     C_CIRCUMCENTER,
@@ -164,20 +164,50 @@ def _on_subsegment(m: Mesh, a: Index, b: Index, c: Index) -> cython.bint:
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
+def _on_boundary(m: Mesh, x: Index) -> cython.bint:
+    """Does the origin of edge ``x`` have a boundary edge (one without a
+    live triangle across) anywhere around it?"""
+    y: Index = x
+    tw: Index
+    for _ in range(m.stamp.shape[0]):
+        tw = m.twin[lprev(y)]  # the edge into the origin, seen from the next triangle
+        if tw == NO_EDGE or is_ghost(m, tw // 3):
+            return True
+        y = tw
+        if y == x:
+            return False
+    return True
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
 def _split_at_apex(r: Refiner, m: Mesh, segs: Subsegments, e: Index, f: Index, triangles: cython.bint) -> cython.int:
     """Split subsegment edge ``e`` (org o, dest d) at the existing vertex
     ``c``, the apex of its side ``f`` (``e`` or its twin), which lies on it
     within rounding: the sliver ``(o, d, c)`` goes (with a triangle on the
     other side, flipping ``o d`` to ``c y``; without one, deleting the
     sliver), and ``c o`` and ``c d`` become the two halves, as a split's
-    would.  No vertex is made.  Returns DONE, NEED_ROOM or PRECISION."""
+    would.  No vertex is made.  Returns DONE, NEED_ROOM or FAILED (nothing
+    changed): the sliver cannot go, because it has no triangle across ``e``
+    to flip with and is an ear of the mesh (deleting it would leave ``c``
+    hanging by one edge), or the flip would fold.  That is no loss of
+    precision: a split point on ``e`` can still be placed (three nearly
+    collinear vertices whose hull is the sliver itself, Triangle meshes
+    them under -pcu), so the caller splits as usual."""
     o: Index = m.corner[lnext(e)]
     d: Index = m.corner[lprev(e)]
     c: Index = m.corner[f]
     g: Index = m.twin[f]
     n_c0: Index = m.twin[lprev(f)]  # the neighbours across the sliver's other edges
     n_c1: Index = m.twin[lnext(f)]
-    bad: cython.bint = g == NO_EDGE and (n_c0 == NO_EDGE or n_c1 == NO_EDGE)  # a sliver ear of the mesh
+    # Deleting the sliver (no triangle across e) makes c o and c d boundary
+    # edges: not if it is an ear of the mesh (c would hang by one edge) or
+    # c is on the boundary already (the domain would be pinched at c, two
+    # boundary chains through one vertex: seven points within rounding of a
+    # line, whose hull's two sides each took the other's vertices until the
+    # sliver left between them had no split point inside).
+    bad: cython.bint = g == NO_EDGE and (n_c0 == NO_EDGE or n_c1 == NO_EDGE or _on_boundary(m, lprev(f)))
     u: Index
     w: Index
     y: Index
@@ -189,10 +219,16 @@ def _split_at_apex(r: Refiner, m: Mesh, segs: Subsegments, e: Index, f: Index, t
             orient2d(m.xy[c, 0], m.xy[c, 1], m.xy[u, 0], m.xy[u, 1], m.xy[y, 0], m.xy[y, 1]) > 0.0
             and orient2d(m.xy[c, 0], m.xy[c, 1], m.xy[y, 0], m.xy[y, 1], m.xy[w, 0], m.xy[w, 1]) > 0.0
         )
-    if bad:  # nothing to split at: Triangle's error
-        r.error_org = o
-        r.error_dest = d
-        return PRECISION
+        # ... and the new edge c y locally Delaunay: where y too lies near
+        # the line o d (a chain of nearly collinear points), w lay inside the
+        # circle through c, u, y, which every later cavity takes for granted
+        # (an invalid mesh: check_mesh's "not locally Delaunay").  (The far
+        # triangle's other edges are not asked: the flip beside an interior
+        # segment (tests/engine/test_rounded_inputs.py) leaves one of them
+        # out of Delaunay for a while, and refusing it piles vertices up at c.)
+        bad = bad or incircle(m.xy[c, 0], m.xy[c, 1], m.xy[u, 0], m.xy[u, 1], m.xy[y, 0], m.xy[y, 1], m.xy[w, 0], m.xy[w, 1]) > 0.0
+    if bad:
+        return FAILED
     # room to queue every triangle around c after the flips that make the
     # mesh Delaunay again (legalize_fan), and to pool the subsegments facing c
     room: Index = m.nlive + 4
@@ -361,10 +397,17 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
     # pieces shrink towards it until a split point lands on it or next to it,
     # and the mesh gets a copy of it or slivers and runs out of precision
     # (Triangle crashes).  Split at that vertex instead.
+    # (Where the apex cannot take the split, the split point is placed as
+    # usual: the rim check below keeps the fan from folding.)
+    status: cython.int
     if _on_subsegment(m, o, d, m.corner[e]):
-        return _split_at_apex(r, m, segs, e, e, triangles)
+        status = _split_at_apex(r, m, segs, e, e, triangles)
+        if status != FAILED:
+            return status
     if tw != NO_EDGE and _on_subsegment(m, o, d, m.corner[tw]):
-        return _split_at_apex(r, m, segs, e, tw, triangles)
+        status = _split_at_apex(r, m, segs, e, tw, triangles)
+        if status != FAILED:
+            return status
     t1: Index = tw // 3 if tw != NO_EDGE else -1
     n: Index
     nb: Index
@@ -386,10 +429,13 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
         w = r.bnd[j, 2]
         if orient2d(px, py, m.xy[u, 0], m.xy[u, 1], m.xy[w, 0], m.xy[w, 1]) <= 0.0:
             forget_cavity(r, m, n)
+            status = FAILED
             if u == apex_e or w == apex_e:
-                return _split_at_apex(r, m, segs, e, e, triangles)
-            if apex_t >= 0 and (u == apex_t or w == apex_t):
-                return _split_at_apex(r, m, segs, e, tw, triangles)
+                status = _split_at_apex(r, m, segs, e, e, triangles)
+            elif apex_t >= 0 and (u == apex_t or w == apex_t):
+                status = _split_at_apex(r, m, segs, e, tw, triangles)
+            if status != FAILED:
+                return status
             r.error_org = o
             r.error_dest = d
             return PRECISION
