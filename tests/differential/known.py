@@ -76,20 +76,18 @@ DEFECTS += [
         "same records, is modelled: refine/ghosts.py; regressions/q34-fifo-order-size.json and "
         "points-q32.5-stale-record-size.json now agree with Triangle split for split. What it leaves out: a "
         "rejected point on an edge, a revival by a vertex other than the subsegment's split point, and one "
-        "after Chew's deletions)"
+        "after Chew's deletions.)"
         " 11 points within rounding of the line y = x + 0.25 under q30a0.000861Q part at split 5 (134 vertices "
         "against 101, spread 100..114, bound 117.1; under q30 alone 97 against 69): right after its Steiner point "
         "(8.49998e-05, 0.250093) is rejected and the subsegment is split at (8.91089e-05, 0.250089) instead, "
         "Triangle splits the triangle (6.93458e-05, 0.250132) (6.99588e-05, 0.250101) (0.000100017, 0.250100), "
         "whose angles are 43, 93 and 44 degrees (not bad) and which its -VVV never reports queueing: a stale "
-        "record served (traced before ghosts.py; regressions/points-collinear-stale-record-size.json)",
+        "record served, which ghosts.py now models: regressions/points-collinear-stale-record-size.json passes)",
         lambda c, f, n: f.kind == "size" and (
             # a corpus or sample input, within 5 % of the rule's bound
             (c.family == "realworld" and n.get("vertices", {}).get("ours", 0) <= 1.05 * n.get("size_bound", 0))
             # point sets above 34 degrees (no segments: the hull's splits and rejections alone)
-            or (read_switches(c.switches).angle >= 34 and not np.size(c.input.get("segments", ())))
-            # nearly collinear point sets: the hull's slivers reject and split in cascades
-            or (c.family == "points-collinear" and not np.size(c.input.get("segments", ())))),
+            or (read_switches(c.switches).angle >= 34 and not np.size(c.input.get("segments", ())))),
     ),
 ]
 
@@ -107,29 +105,6 @@ DEFECTS += [
 
 DEFECTS += [
     Defect(
-        "apex-split-beside-end",
-        "one segment from (-0.3118, 3.9e-287) to (0.6051, -0.1715), (-0.3118, 0) on the hull beside its start, "
-        "and (0.4930, 0.7428), under pcq (regressions/apex-split-beside-end.json; found by "
-        "test_near_end_crossings.py's pairs under pcq): ours' mesh is not Delaunay (edge {2, 3}, a needle "
-        "with a 0-degree angle); Triangle crashes. Diagnosed: the second split (pcqS2 shows it) is "
-        "refine/splits.py _split_at_apex, called by split_subsegment because vertex 2 lies on the "
-        "subsegment 0-4 within rounding (_on_subsegment), 3.9e-287 from its end 0: it flips 0-4 to 2-3 "
-        "whatever incircle says (it checks only that the two new triangles are counter-clockwise) and runs "
-        "no Delaunay test after; the 'sliver' (0, 2, 4) is fat, its circle does not hold 3, and the needle "
-        "(3, 0, 2)'s circle holds 4. Tried: flip only where 0-4 is not locally Delaunay, else keep the sliver "
-        "with 0-4 a plain edge: this case and golden fine, but on generated near-end pairs under pcqS300 one "
-        "refinement ran past 300 s and another mesh was not Delaunay where the current code raises "
-        "PrecisionError at once; not committed. Since 4118f91 Lawson's flips follow the flip (legalize_fan), "
-        "which fixed the not-Delaunay meshes of the campaign's split-at-vertex cases, but they test only the "
-        "edges facing 2, not the flipped edge 2-3 itself: the Delaunay answer here is to keep the sliver "
-        "(0, 2, 4) with 0-4 a plain edge, and refinement must then not loop on such a sliver (the 300 s run)",
-        lambda c, f, n: f.kind == "invalid-mesh" and "is not locally Delaunay" in f.message
-        and c.family == "segment-beside-hull-vertex" and read_switches(c.switches).q,
-    ),
-]
-
-DEFECTS += [
-    Defect(
         "near-collinear-split-not-delaunay",
         "a subsegment split in a chain of nearly collinear points under pucS19njQ leaves an edge that is not "
         "locally Delaunay (4 of 200 chains of scripts/near_collinear_family.py --seed 1: cases 90, 107, 127, "
@@ -139,9 +114,9 @@ DEFECTS += [
         "it exceed 180 degrees by what p's bend adds), where the constrained Delaunay mesh keeps o d as an edge "
         "with the thin triangle (o, d, p) beside it (Triangle's Lawson flips would; "
         "regressions/near-collinear-chain-split-bent.json). (2) The split at an apex on the subsegment within "
-        "rounding flips o d to c y (case 90: edge {1, 13}): the flip is refused where c y itself would not be "
-        "Delaunay, but the far triangle's other edges are not restored by Lawson flips, and one of them can stay "
-        "out of Delaunay to the end",
+        "rounding flips o d to c y (case 90: edge {1, 13}): fixed, the flip is refused where c y itself would not "
+        "be Delaunay and Lawson's flips around c follow it (legalize_fan; "
+        "regressions/near-collinear-chain-apex-flip-far-edge.json passes); (1) is open",
         lambda c, f, n: f.kind == "invalid-mesh" and "not locally Delaunay" in f.message
         and c.family.startswith("near-collinear"),
     ),

@@ -619,6 +619,40 @@ def _near_duplicate_groups(result: dict, rtol: float):
     return xy, pairs, count, label
 
 
+def near_duplicates_merged(result: dict, jettison: bool) -> dict[str, int] | None:
+    """The counts (vertices, triangles, segments) of ``result`` with its
+    near-duplicate vertices merged (``near_duplicate_labels``), or None when
+    it has none.
+
+    Triangle's two roundings of one crossing (``near_duplicate_merges``) can
+    be corners of a triangle of their own: the third corner an input vertex
+    on the overlapping segments, the three sides pieces of segments, so that
+    carving keeps it where nothing else survives (a segment through the
+    origin crossing y = 0.0004024505615234375, on which two input segments
+    overlap, under pQ: Triangle's crossings lie an ulp above and below that
+    line, its one triangle has an area of ~1e-23; ours rounds the exact
+    crossing once, onto the line, and encloses nothing).  Merged, such a
+    triangle has a repeated corner and goes, and with it the subsegments it
+    alone had and, under ``j``, the vertices (and ``o2`` nodes) no other
+    triangle uses; ``o2`` nodes of the triangles that go leave the count
+    in any case."""
+    labels = near_duplicate_labels(result)
+    if labels is None:
+        return None
+    tri = _arr(result, "triangles", 3).astype(np.int64)
+    corners = labels[tri[:, :3]]
+    kept = (corners[:, 0] != corners[:, 1]) & (corners[:, 1] != corners[:, 2]) & (corners[:, 0] != corners[:, 2])
+    edges = {frozenset(e) for t in corners[kept].tolist() for e in ((t[0], t[1]), (t[1], t[2]), (t[2], t[0]))}
+    segs = {frozenset(labels[s].tolist()) for s in _arr(result, "segments", 2).astype(np.int64)}
+    segs = {s for s in segs if len(s) == 2 and s in edges}
+    if jettison:
+        nodes = np.unique(labels[tri[kept].ravel()])
+    else:
+        gone = np.setdiff1d(tri[~kept, 3:].ravel(), tri[kept, 3:].ravel())  # o2 nodes of the merged triangles only
+        nodes = np.unique(np.delete(labels, gone))
+    return {"vertices": int(nodes.size), "triangles": int(kept.sum()), "segments": len(segs)}
+
+
 def crossing_copies(case: Case, t_res: dict) -> int:
     """Vertices Triangle added at exactly the place of an input vertex."""
     iv = np.asarray(case.input["vertices"], dtype=np.float64).reshape(-1, 2)
