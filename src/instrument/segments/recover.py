@@ -42,7 +42,7 @@ from cython.cimports.instrument.core.locate import LOC_INSIDE, LOC_ON_EDGE, LOC_
 from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, Index, Mesh, lnext, lprev, set_parent, spare_triangles
 from cython.cimports.instrument.core.navigate import find_edge, remember_corners, vertex_edge
 from cython.cimports.instrument.core.predicates import dot_sign, orient2d
-from cython.cimports.instrument.core.scaling import unit_scale
+from cython.cimports.instrument.core.scaling import crossing_terms, unit_scale
 from cython.cimports.instrument.core.status import DONE, FAILED, NEED_BUFFER, NEED_ROOM
 from cython.cimports.instrument.core.subsegments import Subsegments, new_record
 from cython.cimports.instrument.segments.crossing import crossing_point, scouted_crossing
@@ -603,34 +603,12 @@ def crossing_parameter(
     2^-537 leave nothing above the subnormal range (0 / 0, or all bits
     lost).  Where the differences are out of the safe range they are scaled
     by an exact power of two first, which leaves the ratio unchanged."""
-    ex: cython.double = bx - ax
-    ey: cython.double = by - ay
-    tx: cython.double = lx - rx
-    ty: cython.double = ly - ry
-    wx: cython.double = rx - ax
-    wy: cython.double = ry - ay
-    mx: cython.double = max(max(max(fabs(ex), fabs(ey)), max(fabs(tx), fabs(ty))), max(fabs(wx), fabs(wy)))
-    f: cython.double
-    if not (mx <= 2.0**240 and mx >= 2.0**-240):
-        if not mx <= 1.7976931348623157e308:  # a difference overflowed: halve first
-            ex = 0.25 * bx - 0.25 * ax
-            ey = 0.25 * by - 0.25 * ay
-            tx = 0.25 * lx - 0.25 * rx
-            ty = 0.25 * ly - 0.25 * ry
-            wx = 0.25 * rx - 0.25 * ax
-            wy = 0.25 * ry - 0.25 * ay
-            mx = max(max(max(fabs(ex), fabs(ey)), max(fabs(tx), fabs(ty))), max(fabs(wx), fabs(wy)))
-        f = unit_scale(mx)
-        ex *= f
-        ey *= f
-        tx *= f
-        ty *= f
-        wx *= f
-        wy *= f
-    den: cython.double = ty * ex - tx * ey
+    num: cython.double
+    den: cython.double
+    num, den = crossing_terms(ax, ay, bx, by, rx, ry, lx, ly, ax, ay)
     t: cython.double = 0.5
     if den != 0.0:
-        t = (ey * wx - ex * wy) / den
+        t = num / den
         t = min(max(t, 0.0), 1.0)
     return t
 
