@@ -362,8 +362,8 @@ def _split_edge(m: Mesh, e: Index, q: Index, nb: Index, st: cython.longlong[::1]
     bond(m, lprev(e), 3 * bottom + 1)
     bond(m, 3 * bottom, 3 * top + 1)
     bond(m, 3 * top, lnext(f))
+    _take_box_edge(m, 3 * bottom + 2, st)  # (Triangle's order: c-a first, a-d last)
     _take_box_edge(m, 3 * top + 2, st)
-    _take_box_edge(m, 3 * bottom + 2, st)
 
 
 @cython.cfunc
