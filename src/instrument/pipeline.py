@@ -199,15 +199,12 @@ def mesh_input(inp: dict, o: Options, work: np.ndarray, seed: int = 0, threads: 
     nseg = len(inp.get("segments", ()))
     spare = room
     method = "incremental" if o.i else "vertical" if o.l else "divconq"  # -F: no sweepline; divide and conquer
-    m, dup, hull_start = delaunay(
+    m, dup = delaunay(
         xy, work, method=method, seed=seed, extra_vertices=spare, extra_triangles=2 * spare,
         parents="vertex_attributes" in inp, constraints=False, threads=threads,
     )
     np.asarray(m.vmark)[: xy.shape[0]] = inp["vertex_markers"]
-    ms = MeshState(
-        mesh=m, segs=Subsegments(nseg + room), n_input=xy.shape[0], dup=dup, n_triangles_initial=m.nlive,
-        hull_start=hull_start,
-    )
+    ms = MeshState(mesh=m, segs=Subsegments(nseg + room), n_input=xy.shape[0], dup=dup, n_triangles_initial=m.nlive)
     for i in np.flatnonzero(dup >= 0):
         ms.warnings.append(f"Warning:  A duplicate vertex at ({xy[i, 0]:.12g}, {xy[i, 1]:.12g}) appeared and was ignored.")
     if o.p:

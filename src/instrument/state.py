@@ -29,7 +29,6 @@ class MeshState:
     n_triangles_initial: int  # triangles the input's triangulation had (0: collinear input)
     warnings: list[str] = field(default_factory=list)
     dead: np.ndarray | None = None  # vertices refinement deleted (left out of the output)
-    hull_start: int = -1  # the vertex whose hull edge Triangle's hull walks start from (-1: the least; delaunay())
 
     @property
     def work(self) -> np.ndarray:

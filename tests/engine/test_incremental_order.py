@@ -114,7 +114,8 @@ def test_outer_space_handle_is_where_c_starts():
     sets += [rng.integers(0, 5, (int(rng.integers(4, 30)), 2)).astype(float) for _ in range(30)]
     sets = [p for p in sets if np.linalg.matrix_rank(p[1:] - p[0]) == 2]
     for pts, t in zip(sets, triangle_runs([(p, "icQ") for p in sets])):
-        m, _, start = delaunay(pts, new_work(), method="incremental")
+        m, _ = delaunay(pts, new_work(), method="incremental")
+        start = m.hull_start
         corner = np.asarray(m.corner)[: 3 * m.nslot].reshape(-1, 3)
         twin = np.asarray(m.twin)[: 3 * m.nslot].reshape(-1, 3)
         alive = np.asarray(m.stamp)[: m.nslot] > 0

@@ -47,16 +47,16 @@ def delaunay(
     extra_triangles: int = 0,
     threads: int = 1,
     **tables,
-) -> tuple[Mesh, np.ndarray, int]:
+) -> tuple[Mesh, np.ndarray]:
     """Delaunay triangulation of the rows of ``xy`` (finite float64 coordinates).
 
     Returns the mesh (ghosts removed; no triangles if the points are all
-    collinear), ``duplicate_of``: -1, or the index of the copy of that
-    point which is in the mesh (the lowest index of the copies), and
-    ``hull_start``: the vertex whose counter-clockwise hull edge Triangle's
-    outer-space handle holds afterwards (where its hull walks and its
-    location of hole and region points start), or -1 when that is the edge
-    leaving the least (x, y) vertex (divide and conquer; no hull).
+    collinear) and ``duplicate_of``: -1, or the index of the copy of that
+    point which is in the mesh (the lowest index of the copies).  The
+    mesh's ``hull_start`` is the vertex whose counter-clockwise hull edge
+    Triangle's outer-space handle holds afterwards (where its hull walks
+    and its location of hole and region points start), or -1 when that is
+    the edge leaving the least (x, y) vertex (divide and conquer; no hull).
     ``method`` is one of ``METHODS``; ``seed`` is not used (neither method
     is randomized: Triangle's incremental method inserts in input order).
     ``extra_vertices`` and ``extra_triangles`` reserve room for later
@@ -97,7 +97,7 @@ def delaunay(
             parallel.triangulate(m, top, alternate, pool)
     remove_ghosts(m)
     _restore_numbering(m, xy, ids)
-    return m, dup, -1
+    return m, dup
 
 
 def _lexicographic_order(xy: np.ndarray) -> np.ndarray:
@@ -137,7 +137,7 @@ def _restore_numbering(m: Mesh, xy: np.ndarray, ids: np.ndarray) -> None:
     m.nvert = n
 
 
-def _incremental(xy, work, extra_vertices, extra_triangles, tables) -> tuple[Mesh, np.ndarray, int]:
+def _incremental(xy, work, extra_vertices, extra_triangles, tables) -> tuple[Mesh, np.ndarray]:
     """Triangle's incremental method (see incremental.py; imported here, as
     only -i runs it).  The points are inserted in input order, so the copy
     of a duplicated point that stays is the first, the lowest index."""
@@ -152,13 +152,12 @@ def _incremental(xy, work, extra_vertices, extra_triangles, tables) -> tuple[Mes
     pts = xy * scale if scale != 1.0 else xy
     m = Mesh(pts, 2 * n + 8 + extra_triangles, vertices=n + 3 + extra_vertices, work=work, **tables)
     dup = np.full(n, -1, dtype=np.int64)
-    start = -1
     if n:
-        dup, start = incremental.triangulate(m, incremental.box_corners(pts))
+        dup, m.hull_start = incremental.triangulate(m, incremental.box_corners(pts))
     if scale != 1.0:
         np.asarray(m.xy)[:n] = xy
     m.rng = 12345  # the later stages' walks start their own sequence
-    return m, dup, start
+    return m, dup
 
 
 #: Beyond 2^+-RANGE (coordinates' largest magnitude) the incremental method
