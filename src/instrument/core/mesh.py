@@ -121,6 +121,10 @@ class Mesh:
         self.nlive = 0
         self.work = new_work() if work is None else work
         self.rng = 12345
+        # Triangle's outer-space handle after the first triangulation: the
+        # hull edge leaving this vertex (incremental insertion sets it), or
+        # -1: the edge leaving the least (x, y) vertex (divide and conquer)
+        self.hull_start = -1
 
     def partner(self) -> Mesh:
         """A mesh over the same tables with counts and work of its own, for a
@@ -140,6 +144,7 @@ class Mesh:
         other.nlive = 0
         other.work = new_work()
         other.rng = self.rng
+        other.hull_start = -1
         return other
 
     # ------------------------------------------------------------ capacity
