@@ -28,7 +28,7 @@ from cython.cimports.instrument.core.locate import LOC_BLOCKED, LOC_FAILED, LOC_
 from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, V_FREE, V_SEGMENT, Index, Mesh, is_ghost, kill_triangle, lnext, lprev
 from cython.cimports.instrument.core.navigate import edge_around, find_edge, remember_corners, vertex_edge
 from cython.cimports.instrument.core.predicates import incircle, orient2d
-from cython.cimports.instrument.core.scaling import unit_scale
+from cython.cimports.instrument.core.scaling import scaled_dot, unit_scale
 from cython.cimports.instrument.core.status import DONE, FAILED, NEED_ROOM, PAUSE, PRECISION
 from cython.cimports.instrument.core.subsegments import Subsegments, new_record
 from cython.cimports.instrument.counters import (
@@ -984,6 +984,8 @@ def first_side(m: Mesh, segs: Subsegments, first: cython.longlong[::1]) -> cytho
         dest = m.corner[3 * t + (k + 2) % 3]
         a = segs.ends[rec, 0]
         b = segs.ends[rec, 1]
-        along = (m.xy[dest, 0] - m.xy[org, 0]) * (m.xy[b, 0] - m.xy[a, 0]) + (m.xy[dest, 1] - m.xy[org, 1]) * (m.xy[b, 1] - m.xy[a, 1]) > 0.0
+        # (scaled: at 2^-540 the products vanished, no side was along, and no
+        # interior subsegment was ever tested for encroachment)
+        along = scaled_dot(m.xy[dest, 0] - m.xy[org, 0], m.xy[dest, 1] - m.xy[org, 1], m.xy[b, 0] - m.xy[a, 0], m.xy[b, 1] - m.xy[a, 1]) > 0.0
         if along or m.twin[e] == NO_EDGE:
             first[rec] = e
