@@ -14,8 +14,8 @@ scale: at 1e200 the triangle package crashes on them).
 
 The four vertices were found by a search over such configurations (slope
 0.7, o and d on a 1/64 grid, c 1e-3 off the midpoint, y half a length beyond
-d, one unit of 2^-52 below the line); scaled by 2^664 (about
-1e200) every predicate sees the same configuration.
+d, one unit of 2^-52 below the line); scaled by 2^-664 and 2^664 (about
+1e-200 and 1e200) every predicate sees the same configuration.
 """
 
 from __future__ import annotations
