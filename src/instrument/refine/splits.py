@@ -292,7 +292,7 @@ def _split_at_apex(r: Refiner, m: Mesh, segs: Subsegments, e: Index, f: Index, t
         # the flip o d -> c y leaves c's new edges to test: a vertex beside
         # them may lie inside their triangles' circles (c was only within
         # rounding of o d), and a mesh left so is not Delaunay
-        u = m.corner[lnext(h0)]  # h0 = c -> u
+        u = m.corner[lprev(h0)]  # h0 = c -> u (its destination)
         w = m.corner[lnext(h1)]  # h1 = w -> c
         flips = m.work[C_FLIP]
         made = legalize_fan(r, m, made)
