@@ -1,8 +1,10 @@
 # Exact rescaling by powers of two (scaling.py).
 from libc.math cimport fabs
+from instrument.core.mesh cimport Index
 
 cpdef double unit_scale(double m) noexcept nogil
 cpdef double scaled_dot(double ux, double uy, double vx, double vy) noexcept nogil
+cpdef double half_extent(double[:, ::1] xy, Index n) noexcept nogil
 
 
 cdef inline (double, double, double, double) scaled_pair(double ux, double uy, double vx, double vy, double limit) noexcept nogil:

@@ -32,6 +32,7 @@ from .. import limits
 from ..core.mesh import V_DEAD
 from ..core.filled import filled
 from ..core.navigate import build_vertex_edges
+from ..core.scaling import half_extent
 from ..core.status import DONE, PAUSE, PRECISION
 from ..errors import TriangleError
 from ..state import MeshState
@@ -147,7 +148,7 @@ def steiner_budget(ms: MeshState, o: Options) -> int:
 KEY_RANGE = 400
 
 
-def key_unit(xy: np.ndarray) -> float:
+def key_unit(xy, n: int | None = None) -> float:
     """The power of two by which edges are measured for Triangle's queue
     buckets: 1 for an input whose extent lies within 2^+-KEY_RANGE, else one
     that brings the extent to about 1.
@@ -159,12 +160,9 @@ def key_unit(xy: np.ndarray) -> float:
     scale in range); 4-point-set polygons at 1e-201 under q34 ran to the
     vertex limit where the same input times 2^667 gives 188.  Measured in
     these units, a mesh is one mesh times the scale (a power of two), and in
-    range nothing changes."""
-    if len(xy) == 0:
-        return 1.0
-    # halves first: the extent itself can be beyond the doubles
-    half = max(float(xy[:, 0].max()) / 2 - float(xy[:, 0].min()) / 2,
-               float(xy[:, 1].max()) / 2 - float(xy[:, 1].min()) / 2)
+    range nothing changes.  ``xy``: the vertices' rows (C-contiguous float64),
+    of which the first ``n`` count (default: all)."""
+    half = half_extent(xy, len(xy) if n is None else n)
     if half == 0.0:
         return 1.0
     exponent = math.frexp(half)[1] + 1  # the extent lies in [2^(exponent-1), 2^exponent)
@@ -182,7 +180,7 @@ def new_refiner(ms: MeshState, o: Options, strategy: str, steiner: str, trace: b
     m.add_constraint_tables()
     slots = m.triangle_capacity
     cfg = Config(o, strategy_id(strategy), steiner == "offcenter", python_test)
-    cfg.key_unit = key_unit(np.asarray(m.xy[: m.nvert]))
+    cfg.key_unit = key_unit(m.xy, m.nvert)
     # The queue is compacted only when it holds more than twice the live
     # triangles (see splits.refine), so a mesh that fills its slots fills a
     # queue of twice as many entries: room for them at once, in zeros the
@@ -217,8 +215,8 @@ def grow_refiner(ms: MeshState, r: Refiner) -> None:
     # changed nothing and starts again): fresh zeros, which the OS maps
     # lazily, instead of copies that touch every page.
     for name in ("cav", "fan", "bnd", "bval", "carry", "lineage", "fan_rec"):
-        a = np.asarray(getattr(r, name))
-        if a.shape[0] < slots:
+        if getattr(r, name).shape[0] < slots:  # (the memoryview's shape: no array made to ask)
+            a = np.asarray(getattr(r, name))
             setattr(r, name, np.zeros((slots,) + a.shape[1:], dtype=a.dtype))
 
 
