@@ -39,7 +39,7 @@ from ..state import MeshState
 from .order import strategy_id
 from ..switches import Options
 from .criteria import queue_triangles
-from .queues import queue_used
+from .queues import queue_clear, queue_used
 from .splits import refine, tally_encroached
 from .state import TRACE_KINDS, Config, Refiner
 
@@ -128,7 +128,10 @@ def run(
         raise
     ms.mesh.rotate_corners(1)
     build_vertex_edges(ms.mesh)
-    return _trace_table(np.asarray(r.trace)[: r.ntrace]) if trace else None
+    if trace:
+        return _trace_table(np.asarray(r.trace)[: r.ntrace])
+    _spare(r)
+    return None
 
 
 def steiner_budget(ms: MeshState, o: Options) -> int:
@@ -186,10 +189,44 @@ def new_refiner(ms: MeshState, o: Options, strategy: str, steiner: str, trace: b
     # queue of twice as many entries: room for them at once, in zeros the
     # OS maps only as the queue reaches them, spares doubling (and copying)
     # it late in the run (100 ms of 2 s on the unit square under a1e-6).
-    return Refiner(
-        cfg, budget=steiner_budget(ms, o), slots=slots, queue=2 * slots + 4096 + 64,
-        records=2 * ms.segs.count + 64, trace=trace,  # room for every subsegment
-    )
+    queue = 2 * slots + 4096 + 64
+    records = 2 * ms.segs.count + 64  # room for every subsegment
+    r = None if trace else _reused(slots, queue, records)
+    if r is not None:
+        r.restart(cfg, steiner_budget(ms, o))
+        return r
+    return Refiner(cfg, budget=steiner_budget(ms, o), slots=slots, queue=queue, records=records, trace=trace)
+
+
+#: Refiners of finished small runs (``SPARE_SLOTS`` triangle slots at most,
+#: ``SPARES`` of them), which the next runs take instead of allocating their
+#: own: a refiner's twenty arrays cost as much to make as a small run's
+#: whole segment recovery (95k instructions; a single triangle's run is some
+#: 700k).  A run takes one off the list and puts it back when it is done, so
+#: two runs never share one (list.pop and append are atomic).  The arrays
+#: are at least as large as a new refiner's would be, and no result depends
+#: on their room (tests/unit/test_room.py).
+_spares: list[Refiner] = []
+SPARE_SLOTS = 1 << 12
+SPARES = 2
+
+
+def _reused(slots: int, queue: int, records: int) -> Refiner | None:
+    """A spare refiner with room for ``slots``, ``queue`` and ``records``, emptied, or None."""
+    try:
+        r = _spares.pop()
+    except IndexError:
+        return None
+    if r.cav.shape[0] < slots or r.hkey.shape[0] < queue or r.enc.shape[0] < records:
+        return None  # (too small: dropped, and a new one made)
+    queue_clear(r)
+    return r
+
+
+def _spare(r: Refiner) -> None:
+    """Keep the refiner of a finished run for the next, if it is small and the list is not full."""
+    if r.trace.shape[0] == 0 and r.cav.shape[0] <= SPARE_SLOTS and len(_spares) < SPARES:
+        _spares.append(r)
 
 
 def grow_refiner(ms: MeshState, r: Refiner) -> None:

@@ -45,13 +45,15 @@ def queue_clear(r: Refiner) -> cython.void:
 
     Only a bucket that holds an entry of the log can be non-empty (a new
     queue, a compaction and this leave every bucket empty, and pops empty
-    them), so only those are reset: refinement clears a new queue (all
-    4,096 buckets, 64 KB, where la.poly's whole run queues 2,700 entries)."""
+    them), and none does when no entry is queued: so only those are reset,
+    and only then.  (Refinement clears a new queue, all 4,096 buckets, 64
+    KB, where la.poly's whole run queues 2,700 entries.)"""
     b: Index
-    for i in range(r.log_length):
-        b = cython.cast(Index, -r.hkey[i])
-        r.bucket[0, b] = -1
-        r.bucket[1, b] = -1
+    if r.hsize > 0 and _bucketed(r):
+        for i in range(r.log_length):
+            b = cython.cast(Index, -r.hkey[i])
+            r.bucket[0, b] = -1
+            r.bucket[1, b] = -1
     r.hsize = 0
     r.top_bucket = -1
     r.log_length = 0

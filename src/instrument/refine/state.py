@@ -58,17 +58,6 @@ class Refiner:
     """The refinement loop's state (see state.pxd for each field)."""
 
     def __init__(self, cfg: Config, *, budget: int, slots: int, queue: int, records: int, trace: bool):
-        self.cfg = cfg
-        self.phase = 0
-        self.budget = budget
-        self.current = -1
-        self.current_stamp = 0
-        self.current_key = 0.0
-        self.taken = 0
-        self.need = 0
-        self.error_org = -1
-        self.error_dest = -1
-        self.error_apex = -1
         self.work_begun = np.zeros(len(NAMES), dtype=np.int64)
         # The queue, the pool and the scratch are written before they are
         # read (entries below hsize / log_length / enc_fresh; the scratch
@@ -80,24 +69,11 @@ class Refiner:
         self.htri = np.empty(queue, dtype=np.int32)  # slots and stamps are int32 in the mesh too
         self.hstamp = np.empty(queue, dtype=np.int32)
         self.bucket = filled((2, NBUCKETS), -1, np.int64)
-        self.hsize = 0
-        self.seq = 0
-        self.top_bucket = -1
-        self.log_length = 0
-        self.compact_at = 0
         # written before read, as the queue; room for a rejected insertion's
         # fan per four slots (la.poly under pq30 keeps 262 rows at 2,392
         # slots: with 256 it paid a NEED_ROOM round, a tenth of a millisecond)
         self.ghost = np.empty((max(256, slots // 4), 5), dtype=np.int64)
-        self.nghost = 0
         self.enc = np.empty((records, 4), dtype=np.int64)
-        self.enc_live = 0
-        self.enc_fresh = 0
-        self.enc_free = -1
-        self.enc_cursor = 0
-        self.enc_busy = False
-        self.acute_slot = -1
-        self.acute = 0
         self.cav = np.empty(slots, dtype=np.int64)
         self.fan = np.empty(slots, dtype=np.int64)
         self.bnd = np.empty((slots, 5), dtype=np.int64)
@@ -106,6 +82,39 @@ class Refiner:
         self.lineage = np.empty((slots, 3), dtype=np.int64)
         self.fan_rec = np.empty((slots, 2), dtype=np.int64)
         self.trace = np.zeros((1024 if trace else 0, 5), dtype=np.int64)
+        self.restart(cfg, budget)
+
+    def restart(self, cfg: Config, budget: int) -> None:
+        """Start a run under ``cfg`` with ``budget`` Steiner points, on the
+        arrays as they are: every field but the arrays gets its first value.
+        The arrays are written before they are read, but for the buckets,
+        which must all be empty (-1): so they are when the refiner is new,
+        and after ``queues.queue_clear``, which a refiner reused for another
+        run (refine.new_refiner) takes first."""
+        self.cfg = cfg
+        self.phase = 0
+        self.budget = budget
+        self.current = -1
+        self.current_stamp = 0
+        self.current_key = 0.0
+        self.taken = 0
+        self.need = 0
+        self.error_org = -1
+        self.error_dest = -1
+        self.error_apex = -1
+        self.hsize = 0
+        self.seq = 0
+        self.top_bucket = -1
+        self.log_length = 0
+        self.compact_at = 0
+        self.nghost = 0
+        self.enc_live = 0
+        self.enc_fresh = 0
+        self.enc_free = -1
+        self.enc_cursor = 0
+        self.enc_busy = False
+        self.acute_slot = -1
+        self.acute = 0
         self.ntrace = 0
 
     @property
