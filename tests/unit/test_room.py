@@ -59,3 +59,37 @@ def test_mesh_counts_and_trace_do_not_depend_on_the_starting_room(name, switches
         assert sorted(mesh) == sorted(first_mesh)
         for key in first_mesh:
             assert np.array_equal(mesh[key], first_mesh[key]), key
+
+
+def _triangulate(inp: dict, switches: str, strategy: str):
+    import instrument
+
+    r = instrument.triangulate(inp, switches + "Q", strategy=strategy, threads=1)
+    return r, r.work
+
+
+def test_a_reused_refiner_changes_nothing():
+    """Small runs reuse the refiner a finished run left (refine._spares):
+    whatever that run was (another order, another input, a Steiner budget
+    that ended it with the queue still full), the next mesh and its counts
+    are those a new refiner gives."""
+    cases = [
+        ("la", "pq30", "triangle"),
+        ("la", "pq30S40", "triangle"),  # ends with entries still queued
+        ("face", "pq33", "worst-angle"),  # a heap, not buckets
+        ("dots", "cq30", "triangle"),
+        ("la", "pq30a0.5", "smallest"),
+        ("la", "pq30", "triangle"),
+    ]
+    fresh = []
+    for name, switches, strategy in cases:
+        refine._spares.clear()
+        fresh.append(_triangulate(_input(name), switches, strategy))
+    refine._spares.clear()
+    for (name, switches, strategy), (first_mesh, first_work) in zip(cases, fresh):
+        mesh, work = _triangulate(_input(name), switches, strategy)
+        assert refine._spares, "the run left its refiner for the next"
+        assert work == first_work
+        assert sorted(mesh) == sorted(first_mesh)
+        for key in first_mesh:
+            assert np.array_equal(mesh[key], first_mesh[key]), key

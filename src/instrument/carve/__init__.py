@@ -30,7 +30,7 @@ def carve(ms: MeshState, o: Options, holes: np.ndarray | None, regions: np.ndarr
     if has_regions:
         found_regions = np.zeros((len(regions), 2), dtype=np.int64)
         locate_points(m, np.ascontiguousarray(regions[:, :2]), lo, hi, found_regions, start)
-    queue = np.zeros(slots, dtype=np.int64)
+    queue = np.empty(slots, dtype=np.int64)  # (the kernels write each entry before reading it)
     tflag = np.asarray(m.tflag)
     n = 0
     if not o.c:
@@ -44,7 +44,7 @@ def carve(ms: MeshState, o: Options, holes: np.ndarray | None, regions: np.ndarr
                 queue[n] = t
                 n += 1
     plague(m, ms.segs, queue, n)
-    if found_regions is not None:
+    if found_regions is not None and (o.A or o.var_area):
         seen = np.zeros(slots, dtype=np.int64)
         if o.A:
             m.add_attributes(np.zeros(m.nslot))

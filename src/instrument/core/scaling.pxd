@@ -1,9 +1,12 @@
 # Exact rescaling by powers of two (scaling.py).
 from libc.math cimport fabs
+from libc.string cimport memcpy
+from instrument.core.mesh cimport Index
 
 cpdef double unit_scale(double m) noexcept nogil
 cpdef double scaled_dot(double ux, double uy, double vx, double vy) noexcept nogil
 cpdef (double, double) crossing_terms(double ax, double ay, double bx, double by, double rx, double ry, double lx, double ly, double ox, double oy) noexcept nogil
+cpdef double half_extent(double[:, ::1] xy, Index n) noexcept nogil
 
 
 cdef inline (double, double, double, double) scaled_pair(double ux, double uy, double vx, double vy, double limit) noexcept nogil:
@@ -17,3 +20,17 @@ cdef inline (double, double, double, double) scaled_pair(double ux, double uy, d
         f = unit_scale(big)
         return ux * f, uy * f, vx * f, vy * f
     return ux, uy, vx, vy
+
+
+cdef inline unsigned long long double_bits(double x) noexcept nogil:
+    # the bits of x (unit_scale reads its exponent)
+    cdef unsigned long long bits
+    memcpy(&bits, &x, sizeof(double))
+    return bits
+
+
+cdef inline double bits_double(unsigned long long bits) noexcept nogil:
+    # the double with these bits
+    cdef double x
+    memcpy(&x, &bits, sizeof(double))
+    return x

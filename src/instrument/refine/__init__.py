@@ -32,13 +32,14 @@ from .. import limits
 from ..core.mesh import V_DEAD
 from ..core.filled import filled
 from ..core.navigate import build_vertex_edges
+from ..core.scaling import half_extent
 from ..core.status import DONE, PAUSE, PRECISION
 from ..errors import TriangleError
 from ..state import MeshState
 from .order import strategy_id
 from ..switches import Options
 from .criteria import queue_triangles
-from .queues import queue_used
+from .queues import queue_clear, queue_used
 from .splits import refine, tally_encroached
 from .state import TRACE_KINDS, Config, Refiner
 
@@ -127,7 +128,10 @@ def run(
         raise
     ms.mesh.rotate_corners(1)
     build_vertex_edges(ms.mesh)
-    return _trace_table(np.asarray(r.trace)[: r.ntrace]) if trace else None
+    if trace:
+        return _trace_table(np.asarray(r.trace)[: r.ntrace])
+    _spare(r)
+    return None
 
 
 def steiner_budget(ms: MeshState, o: Options) -> int:
@@ -147,7 +151,7 @@ def steiner_budget(ms: MeshState, o: Options) -> int:
 KEY_RANGE = 400
 
 
-def key_unit(xy: np.ndarray) -> float:
+def key_unit(xy, n: int | None = None) -> float:
     """The power of two by which edges are measured for Triangle's queue
     buckets: 1 for an input whose extent lies within 2^+-KEY_RANGE, else one
     that brings the extent to about 1.
@@ -161,12 +165,10 @@ def key_unit(xy: np.ndarray) -> float:
     these units, a mesh is one mesh times the scale (a power of two), and in
     range nothing changes.  Edges whose squares in these units are still
     below the doubles' range (a mesh graded from 1e-301 to 1e300) go on past
-    Triangle's finest bucket (criteria._triangle_key, order.wide_bucket)."""
-    if len(xy) == 0:
-        return 1.0
-    # halves first: the extent itself can be beyond the doubles
-    half = max(float(xy[:, 0].max()) / 2 - float(xy[:, 0].min()) / 2,
-               float(xy[:, 1].max()) / 2 - float(xy[:, 1].min()) / 2)
+    Triangle's finest bucket (criteria._triangle_key, order.wide_bucket).
+    ``xy``: the vertices' rows (C-contiguous float64), of which the first
+    ``n`` count (default: all)."""
+    half = half_extent(xy, len(xy) if n is None else n)
     if half == 0.0:
         return 1.0
     exponent = math.frexp(half)[1] + 1  # the extent lies in [2^(exponent-1), 2^exponent)
@@ -184,16 +186,50 @@ def new_refiner(ms: MeshState, o: Options, strategy: str, steiner: str, trace: b
     m.add_constraint_tables()
     slots = m.triangle_capacity
     cfg = Config(o, strategy_id(strategy), steiner == "offcenter", python_test)
-    cfg.key_unit = key_unit(np.asarray(m.xy[: m.nvert]))
+    cfg.key_unit = key_unit(m.xy, m.nvert)
     # The queue is compacted only when it holds more than twice the live
     # triangles (see splits.refine), so a mesh that fills its slots fills a
     # queue of twice as many entries: room for them at once, in zeros the
     # OS maps only as the queue reaches them, spares doubling (and copying)
     # it late in the run (100 ms of 2 s on the unit square under a1e-6).
-    return Refiner(
-        cfg, budget=steiner_budget(ms, o), slots=slots, queue=2 * slots + 4096 + 64,
-        records=2 * ms.segs.count + 64, trace=trace,  # room for every subsegment
-    )
+    queue = 2 * slots + 4096 + 64
+    records = 2 * ms.segs.count + 64  # room for every subsegment
+    r = None if trace else _reused(slots, queue, records)
+    if r is not None:
+        r.restart(cfg, steiner_budget(ms, o))
+        return r
+    return Refiner(cfg, budget=steiner_budget(ms, o), slots=slots, queue=queue, records=records, trace=trace)
+
+
+#: Refiners of finished small runs (``SPARE_SLOTS`` triangle slots at most,
+#: ``SPARES`` of them), which the next runs take instead of allocating their
+#: own: a refiner's twenty arrays cost as much to make as a small run's
+#: whole segment recovery (95k instructions; a single triangle's run is some
+#: 700k).  A run takes one off the list and puts it back when it is done, so
+#: two runs never share one (list.pop and append are atomic).  The arrays
+#: are at least as large as a new refiner's would be, and no result depends
+#: on their room (tests/unit/test_room.py).
+_spares: list[Refiner] = []
+SPARE_SLOTS = 1 << 12
+SPARES = 2
+
+
+def _reused(slots: int, queue: int, records: int) -> Refiner | None:
+    """A spare refiner with room for ``slots``, ``queue`` and ``records``, emptied, or None."""
+    try:
+        r = _spares.pop()
+    except IndexError:
+        return None
+    if r.cav.shape[0] < slots or r.hkey.shape[0] < queue or r.enc.shape[0] < records:
+        return None  # (too small: dropped, and a new one made)
+    queue_clear(r)
+    return r
+
+
+def _spare(r: Refiner) -> None:
+    """Keep the refiner of a finished run for the next, if it is small and the list is not full."""
+    if r.trace.shape[0] == 0 and r.cav.shape[0] <= SPARE_SLOTS and len(_spares) < SPARES:
+        _spares.append(r)
 
 
 def grow_refiner(ms: MeshState, r: Refiner) -> None:
@@ -219,8 +255,8 @@ def grow_refiner(ms: MeshState, r: Refiner) -> None:
     # changed nothing and starts again): fresh zeros, which the OS maps
     # lazily, instead of copies that touch every page.
     for name in ("cav", "fan", "bnd", "bval", "carry", "lineage", "fan_rec"):
-        a = np.asarray(getattr(r, name))
-        if a.shape[0] < slots:
+        if getattr(r, name).shape[0] < slots:  # (the memoryview's shape: no array made to ask)
+            a = np.asarray(getattr(r, name))
             setattr(r, name, np.zeros((slots,) + a.shape[1:], dtype=a.dtype))
 
 

@@ -932,20 +932,26 @@ def refine(r: Refiner, m: Mesh, segs: Subsegments) -> cython.int:
                 # and popping an empty queue read before the bucket table
                 # (5 points from 1e-303 to 1e300 under q25n crashed)
                 return DONE
-        if r.taken >= PAUSE_EVERY:
-            r.taken = 0
-            return PAUSE
-        r.taken += 1
-        i = queue_pop(r)
-        t = r.htri[i]
-        stamp = r.hstamp[i]
-        if t < 0:  # a rejected insertion's entry: its triangle, if remade (queues.ghost_slot)
-            t = ghost_slot(r, m, -1 - t)
-            stamp = m.stamp[t] if t >= 0 else 0
-        m.work[C_QUEUE_POP] += 1
-        if t < 0 or m.stamp[t] != stamp:
+        # Pop to the next current entry.  Most entries are stale (la.poly:
+        # 2,026 of 2,696), and a stale pop changes nothing the checks above
+        # read but the queue's size: pop again here, without them.
+        while True:
+            if r.taken >= PAUSE_EVERY:
+                r.taken = 0
+                return PAUSE
+            r.taken += 1
+            i = queue_pop(r)
+            t = r.htri[i]
+            stamp = r.hstamp[i]
+            if t < 0:  # a rejected insertion's entry: its triangle, if remade (queues.ghost_slot)
+                t = ghost_slot(r, m, -1 - t)
+                stamp = m.stamp[t] if t >= 0 else 0
+            m.work[C_QUEUE_POP] += 1
+            if t >= 0 and m.stamp[t] == stamp:
+                break
             m.work[C_STALE_POP] += 1
-            continue
+            if r.hsize == 0:
+                return DONE
         r.current_key = r.hkey[i]
         r.current = t
         r.current_stamp = stamp

@@ -60,6 +60,44 @@ class Refiner:
     """The refinement loop's state (see state.pxd for each field)."""
 
     def __init__(self, cfg: Config, *, budget: int, slots: int, queue: int, records: int, trace: bool):
+        self.work_begun = np.zeros(len(NAMES), dtype=np.int64)
+        # The queue, the pool and the scratch are written before they are
+        # read (entries below hsize / log_length / enc_fresh; the scratch
+        # within one step): uninitialised memory, which spares a small run
+        # zeroing half a megabyte (the allocation took a tenth of la.poly's
+        # refinement setup) and a large one nothing (fresh pages are zero).
+        self.hkey = np.empty(queue)
+        self.hseq = np.empty(queue, dtype=np.int64)
+        self.htri = np.empty(queue, dtype=np.int32)  # slots and stamps are int32 in the mesh too
+        self.hstamp = np.empty(queue, dtype=np.int32)
+        # the buckets must be empty (-1) before a run; Triangle's 4,096 are made
+        # so here, the finer ones past them (order.wide_bucket) when first used
+        # (queues.bucket_make_ready: setting all 10,496 cost 7 % on a square)
+        self.bucket = np.empty((2, NBUCKETS), dtype=np.int64)
+        self.bucket[:, :TRIANGLE_BUCKETS] = -1
+        self.bucket_ready = TRIANGLE_BUCKETS
+        # written before read, as the queue; room for a rejected insertion's
+        # fan per four slots (la.poly under pq30 keeps 262 rows at 2,392
+        # slots: with 256 it paid a NEED_ROOM round, a tenth of a millisecond)
+        self.ghost = np.empty((max(256, slots // 4), 5), dtype=np.int64)
+        self.enc = np.empty((records, 4), dtype=np.int64)
+        self.cav = np.empty(slots, dtype=np.int64)
+        self.fan = np.empty(slots, dtype=np.int64)
+        self.bnd = np.empty((slots, 5), dtype=np.int64)
+        self.bval = np.empty((slots, 2))
+        self.carry = np.empty(slots)
+        self.lineage = np.empty((slots, 3), dtype=np.int64)
+        self.fan_rec = np.empty((slots, 2), dtype=np.int64)
+        self.trace = np.zeros((1024 if trace else 0, 5), dtype=np.int64)
+        self.restart(cfg, budget)
+
+    def restart(self, cfg: Config, budget: int) -> None:
+        """Start a run under ``cfg`` with ``budget`` Steiner points, on the
+        arrays as they are: every field but the arrays gets its first value.
+        The arrays are written before they are read, but for the buckets,
+        which must all be empty (-1): so they are when the refiner is new,
+        and after ``queues.queue_clear``, which a refiner reused for another
+        run (refine.new_refiner) takes first."""
         self.cfg = cfg
         self.phase = 0
         self.budget = budget
@@ -71,27 +109,12 @@ class Refiner:
         self.error_org = -1
         self.error_dest = -1
         self.error_apex = -1
-        self.work_begun = np.zeros(len(NAMES), dtype=np.int64)
-        # The queue, the pool and the scratch are written before they are
-        # read (entries below hsize / log_length / enc_fresh; the scratch
-        # within one step): uninitialised memory, which spares a small run
-        # zeroing half a megabyte (the allocation took a tenth of la.poly's
-        # refinement setup) and a large one nothing (fresh pages are zero).
-        self.hkey = np.empty(queue)
-        self.hseq = np.empty(queue, dtype=np.int64)
-        self.htri = np.empty(queue, dtype=np.int32)  # slots and stamps are int32 in the mesh too
-        self.hstamp = np.empty(queue, dtype=np.int32)
-        self.bucket = np.empty((2, NBUCKETS), dtype=np.int64)  # (setting all 10496 cost 7 % on a square)
-        self.bucket[:, :TRIANGLE_BUCKETS] = -1
-        self.bucket_ready = TRIANGLE_BUCKETS
         self.hsize = 0
         self.seq = 0
         self.top_bucket = -1
         self.log_length = 0
         self.compact_at = 0
-        self.ghost = np.empty((256, 5), dtype=np.int64)  # written before read, as the queue
         self.nghost = 0
-        self.enc = np.empty((records, 4), dtype=np.int64)
         self.enc_live = 0
         self.enc_fresh = 0
         self.enc_free = -1
@@ -99,14 +122,6 @@ class Refiner:
         self.enc_busy = False
         self.acute_slot = -1
         self.acute = 0
-        self.cav = np.empty(slots, dtype=np.int64)
-        self.fan = np.empty(slots, dtype=np.int64)
-        self.bnd = np.empty((slots, 5), dtype=np.int64)
-        self.bval = np.empty((slots, 2))
-        self.carry = np.empty(slots)
-        self.lineage = np.empty((slots, 3), dtype=np.int64)
-        self.fan_rec = np.empty((slots, 2), dtype=np.int64)
-        self.trace = np.zeros((1024 if trace else 0, 5), dtype=np.int64)
         self.ntrace = 0
 
     @property
