@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..core.mesh import Mesh, relabel_corners, remove_ghosts
+from ..core.mesh import Mesh, relabel_corners, remove_ghosts, remove_ghosts_around_hull
 from ..core.filled import filled
 from ..counters import C_DUPLICATE
 from . import divconq, parallel
@@ -88,7 +88,7 @@ def delaunay(
             m = Mesh(pts, 2 * n + 8 + extra_triangles, vertices=n + extra_vertices, work=work, **tables)
             del pts
             parallel.triangulate(m, top, alternate, pool)
-    remove_ghosts(m)
+    remove_ghosts_around_hull(m)
     _restore_numbering(m, xy, ids)
     return m, dup
 
@@ -181,3 +181,4 @@ def _keep_lowest_copy(m: Mesh, dup: np.ndarray) -> None:
     root = np.where(dup[group] >= 0, dup[group], group)
     dup[group] = best[root]
     dup[best[root]] = -1
+
