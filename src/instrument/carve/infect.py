@@ -75,12 +75,16 @@ def start_hull_edge(m: Mesh, incremental: cython.bint) -> Index:
     points (the one its outer-space triangle points at), or NO_EDGE.
 
     After divide and conquer it is the edge leaving the hull vertex with
-    the least (x, y), counter-clockwise.  After incremental insertion it is,
+    the least (x, y), counter-clockwise, until an edge flip or split next to
+    the boundary bonds another boundary edge to Triangle's outer space
+    (``Mesh.hull_edge`` follows it).  After incremental insertion it is,
     observed on the `triangle` package, the hull edge arriving at input
     vertex 0 when that vertex is on the hull; otherwise (no rule was found)
     the divide-and-conquer one.  Only points strictly left of its line are
     located, so a hole point on that edge's line is ignored."""
-    e: Index
+    e: Index = m.hull_edge
+    if not incremental and e >= 0 and m.stamp[e // 3] > 0 and m.twin[e] == NO_EDGE:
+        return e
     if incremental:
         for t in range(m.nslot):
             if m.stamp[t] <= 0:
@@ -96,15 +100,15 @@ def start_hull_edge(m: Mesh, incremental: cython.bint) -> Index:
 @cython.nogil
 @cython.exceptval(check=False)
 def infect_hull(m: Mesh, segs: Subsegments, queue: cython.longlong[::1]) -> Index:
-    """Walk the convex hull counter-clockwise from the edge leaving its
-    lowest vertex (least x, then y), as Triangle does: a triangle on a hull
+    """Walk the convex hull counter-clockwise from ``start_hull_edge``, as
+    Triangle does: a triangle on a hull
     edge that is not a subsegment is infected and appended to ``queue``; a
     hull subsegment with marker 0 becomes a boundary, but only if its
     triangle was not infected earlier in the walk (through another of its
     hull edges), so the walk's order decides some endpoints' markers.
     Returns the queue length."""
     n: Index = 0
-    e0: Index = _first_hull_edge(m)
+    e0: Index = start_hull_edge(m, False)
     e: Index = e0
     t: Index
     f: Index
@@ -182,8 +186,8 @@ def plague(m: Mesh, segs: Subsegments, queue: cython.longlong[::1], n: Index) ->
     while head < n:
         t = queue[head]
         head += 1
-        for k in range(3):
-            e = 3 * t + k
+        for k in range(3):  # edges 2, 0, 1: Triangle's orientations 0, 1, 2 (the order it infects in)
+            e = 3 * t + (k + 2) % 3
             tw = m.twin[e]
             if tw == NO_EDGE or m.tflag[tw // 3]:
                 continue
