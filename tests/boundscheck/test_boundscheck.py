@@ -20,8 +20,10 @@ import pytest
 import triangle
 
 from checked_build import checked_tree
+from tests.differential.cases import decode_input
 
 HERE = Path(__file__).resolve().parent
+REGRESSIONS = HERE.parent / "differential" / "regressions"
 
 SQUARE = {"vertices": [[0, 0], [1, 0], [1, 1], [0, 1]], "segments": [[0, 1], [1, 2], [2, 3], [3, 0]]}
 TWO_REGIONS = {
@@ -55,6 +57,15 @@ def _cases() -> list[dict]:
     ]
     for strategy in ("worst-angle", "adversary", "random"):
         cases.append({"input": _package("la"), "opts": "pq25", "kwargs": {"strategy": strategy}})
+    # 8 points within rounding of a line (campaign seed 2801): under pDc a hull
+    # subsegment is split at a chain vertex and the flips after it lost the
+    # halves' edges (splits._split_at_apex read the wrong end of one), so the
+    # next step wrote through edge -1 and the process segfaulted.  The run may
+    # end in a PrecisionError (Triangle does not finish it); it must stay in
+    # bounds.
+    chain = decode_input(json.loads((REGRESSIONS / "apex-split-flip-lost-halves.json").read_text())["input"])
+    cases.append({"input": {k: v.tolist() for k, v in chain.items()},
+                  "opts": "pDceviQ", "may_fail": True})
     return cases
 
 
@@ -73,7 +84,8 @@ def test_meshing_paths_stay_in_bounds():
     cases = _cases()
     out = _run_checked(cases)
     assert out["compiled"]
-    problems = [(c["opts"], row) for c, row in zip(cases, out["cases"]) if row["ignored"] or "error" in row]
+    problems = [(c["opts"], row) for c, row in zip(cases, out["cases"])
+                if row["ignored"] or ("error" in row and not c.get("may_fail"))]
     assert not problems, problems
 
 

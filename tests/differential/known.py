@@ -50,20 +50,6 @@ DEFECTS = [
 
 DEFECTS += [
     Defect(
-        "incremental-order",
-        "under i, ours (a randomized incremental method) leaves the first triangulation's triangles in another "
-        "order and rotation than Triangle's incremental method, and under u (whose test reads the triangle's "
-        "origin) the refinement then takes other steps: 7 points under uYiQ give 34 vertices against 26. Given the "
-        "same triangles in the same order (-r), ours and Triangle make the same mesh (26 and 26; 34 and 34 from "
-        "ours' order). Without u too: a polygon with holes under pqiQ (campaign seed 2703) gives ours 35 "
-        "vertices against Triangle's 31 (bound 34.6), while pqQ gives 35 in both, and -rq on Triangle's own piQ "
-        "mesh gives 31 in both (regressions/incremental-order-polygon-holes.json)",
-        lambda c, f, n: f.kind == "size" and read_switches(c.switches).i,
-    ),
-]
-
-DEFECTS += [
-    Defect(
         "queue-order-size",
         "Triangle's refinement order follows its record memory, which ours models in part, so the meshes part and "
         "ours can end above Triangle's re-expression spread, as seen in Triangle's -VVV queue events "

@@ -3,7 +3,8 @@
 Triangle can crash the interpreter or hang, and ours must never take the
 test session down with it either, so both run in persistent child
 processes (``worker.py``): started once per session, restarted after a
-crash or a timeout, and every call has a deadline.  ``Outcome`` is what a
+crash or a timeout, and every call has a deadline: its CPU time, so that
+the verdict does not depend on the machine's load, with a wall-time ceiling.  ``Outcome`` is what a
 call gave: a result, an exception (type and message), a crash (signal) or a
 timeout.
 """
@@ -30,7 +31,9 @@ ROOT = Path(__file__).resolve().parents[2]
 
 TRIANGLE_TIMEOUT = 10.0
 OURS_TIMEOUT = 20.0
-#: the first call to ours loads (or compiles) numba kernels
+#: a call ends after its timeout in CPU time or this many times it in wall time
+WALL_FACTOR = 4.0
+#: the first calls to ours import the compiled kernels (a bound for a machine under heavy load)
 OURS_STARTUP_TIMEOUT = 900.0
 
 # inputs that make ours load every kernel a case may need before any case is timed
@@ -118,14 +121,18 @@ class Worker:
     def _call(self, tri: dict, opts: str, timeout: float) -> Outcome:
         body = pickle.dumps((tri, opts), protocol=pickle.HIGHEST_PROTOCOL)
         t0 = time.perf_counter()
+        cpu0 = self._cpu_seconds()
         try:
             self.proc.stdin.write(len(body).to_bytes(8, "little") + body)
             self.proc.stdin.flush()
-            head = self._read(8, t0 + timeout)
-            reply = pickle.loads(self._read(int.from_bytes(head, "little"), t0 + timeout + 5.0))
+            head = self._read(8, t0, cpu0, timeout)
+            reply = pickle.loads(self._read(int.from_bytes(head, "little"), t0, cpu0, timeout + 5.0))
         except TimeoutError:
+            cpu = self._cpu_seconds() - cpu0
             self.stop()
-            return Outcome("timeout", message=f"no answer within {timeout:g} s", seconds=time.perf_counter() - t0)
+            return Outcome("timeout", message=f"no answer within {timeout:g} s of CPU time "
+                           f"({cpu:.1f} s CPU, {time.perf_counter() - t0:.1f} s wall)",
+                           seconds=time.perf_counter() - t0)
         except (EOFError, BrokenPipeError, OSError):
             code = self.proc.wait()
             tail = self._stderr_tail()
@@ -144,16 +151,32 @@ class Worker:
             warnings=reply.get("warnings", []),
         )
 
-    def _read(self, n: int, deadline: float) -> bytes:
+    def _cpu_seconds(self) -> float:
+        """The worker's CPU time so far (user and system), or -1 where
+        /proc cannot tell (the deadline is then on wall time alone)."""
+        try:
+            with open(f"/proc/{self.proc.pid}/stat") as f:
+                fields = f.read().rsplit(")", 1)[1].split()
+            return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+        except (OSError, ValueError, IndexError, AttributeError):
+            return -1.0
+
+    def _read(self, n: int, t0: float, cpu0: float, timeout: float) -> bytes:
+        """n bytes of the reply, waiting while the call has used less than
+        ``timeout`` seconds of CPU time (on a loaded machine a call's wall
+        time can be many times its CPU time, and a hang is a run that goes
+        on computing), and at most WALL_FACTOR times that in wall time (a
+        worker that waits for nothing also ends)."""
         fd = self.proc.stdout.fileno()
         buf = b""
         while len(buf) < n:
-            left = deadline - time.perf_counter()
-            if left <= 0:
+            wall = time.perf_counter() - t0
+            cpu = self._cpu_seconds() - cpu0 if cpu0 >= 0 else wall
+            if cpu >= timeout or wall >= WALL_FACTOR * timeout:
                 raise TimeoutError
-            ready, _, _ = select.select([fd], [], [], left)
+            ready, _, _ = select.select([fd], [], [], min(1.0, max(timeout - cpu, 0.05)))
             if not ready:
-                raise TimeoutError
+                continue
             chunk = os.read(fd, min(n - len(buf), 1 << 20))
             if not chunk:
                 raise EOFError

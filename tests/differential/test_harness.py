@@ -83,3 +83,20 @@ def test_same_outcome_compares_arrays():
     assert same_outcome(a, Outcome("ok", result={"vertices": np.zeros((2, 2))}))
     assert not same_outcome(a, Outcome("ok", result={"vertices": np.ones((2, 2))}))
     assert not same_outcome(a, Outcome("crash"))
+
+
+def test_a_call_times_out_on_its_cpu_time_and_the_worker_starts_again():
+    """A run past its budget ends as a timeout that says what it used, and
+    the next call starts a new worker (runners.Worker)."""
+    from tests.differential.runners import Worker
+
+    square = {"vertices": np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]),
+              "segments": np.array([[0, 1], [1, 2], [2, 3], [3, 0]], dtype=np.int32)}
+    w = Worker("ours", timeout=0.05, startup_timeout=600.0)
+    try:
+        out = w.call(square, "pq30a0.0000001Q")  # seconds of refinement
+        assert out.status == "timeout" and "CPU" in out.message, out.summary()
+        again = w.call(square, "pQ", timeout=600.0)
+        assert again.status == "ok" and len(again.result["triangles"]) == 2
+    finally:
+        w.stop()

@@ -621,3 +621,16 @@ def test_a_vertex_a_hair_from_a_segment_end_does_not_fake_a_gap():
     pslg = {"vertices": v, "segments": np.array([[0, 1], [1, 2], [2, 3], [3, 0], [4, 5]])}
     assert check_mesh(instrument.triangulate(pslg, "pQ"), pslg) == []
     assert check_mesh(triangle.triangulate(pslg, "pQ"), pslg) == []
+
+
+def test_shell_distances_600_decades_apart_are_compared_without_overflow():
+    # Miller-Pav-Walkington's test compares the squared distances of a short
+    # edge's ends from the corner J their segments share: 1e50 and 1e250 from
+    # J here, a ratio whose square overflowed (an OverflowError out of
+    # check_mesh on a 1e-304 .. 1e300 mesh refined under pYqc)
+    V = np.array([[0, 0], [1e50, 0], [1e300, 0], [1e300, 1e300], [0, 1e300], [0, 1e250]])
+    mesh = {"vertices": V, "triangles": np.array([[0, 1, 5], [1, 2, 5], [5, 2, 3], [5, 3, 4]]),
+            "segments": np.array([[0, 1], [1, 2], [2, 3], [3, 4], [4, 5], [5, 0]])}
+    pslg = {"vertices": V[[0, 2, 3, 4]], "segments": np.array([[0, 1], [1, 2], [2, 3], [3, 0]])}
+    problems = check_mesh(mesh, pslg=pslg, min_angle=20, delaunay=False)
+    assert [p.split(" has ")[0] for p in problems] == ["triangle 0 [0, 1, 5]", "triangle 1 [1, 2, 5]"]

@@ -3,9 +3,10 @@
 Triangle locates a hole or region point only if it lies strictly left of
 the hull edge its point location starts from: after divide and conquer the
 counter-clockwise hull edge leaving the least (x, y) vertex; after
-incremental insertion the hull edge arriving at input vertex 0 (when that
-vertex is on the hull).  A hole point on that edge (or at its ends) eats
-nothing; on any other hull edge it eats the domain.  The expected values
+incremental insertion the first hull edge its removal of the bounding
+triangle meets (delaunay/incremental.py; on the square, the edge arriving
+at vertex 0).  A hole point on that edge (or at its ends) eats nothing; on
+any other hull edge it eats the domain.  The expected values
 were read off the `triangle` package (20250106).
 """
 
@@ -36,7 +37,7 @@ def _square(opts, holes=None, regions=None):
     "opts, kept_hole",
     [
         ("pQ", [0.5, 0]), ("plQ", [0.5, 0]), ("pQ", [0, 0]), ("pQ", [1, 0]),  # the bottom edge leaves (0, 0)
-        ("piQ", [0, 0.5]),  # under i: the edge arriving at vertex 0
+        ("piQ", [0, 0.5]),  # under i: the edge from (0, 1) to (0, 0)
     ],
 )
 def test_hole_on_the_start_edge_is_ignored(opts, kept_hole):

@@ -189,3 +189,28 @@ def test_the_mesh_is_one_mesh_times_the_scale(switches, angle):
         for k, v, t, w in group[1:]:
             assert np.array_equal(v, group[0][1]) and np.array_equal(t, group[0][2]) and w == group[0][3], k
     assert len(inside[0][1]) == len(beyond[0][1]) and len(inside[0][2]) == len(beyond[0][2])
+
+
+INTERIOR_SEGMENT = {
+    # a unit square with an interior segment that the vertex above it encroaches
+    "vertices": [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0], [0.2, 0.5], [0.8, 0.5], [0.5, 0.53]],
+    "segments": [[0, 1], [1, 2], [2, 3], [3, 0], [4, 5]],
+}
+
+
+@pytest.mark.parametrize("k", [-540, -600, -1000])
+@pytest.mark.parametrize("switches", ["pqQ", "pDQ"])
+def test_interior_subsegments_are_pooled_at_any_scale(switches, k):
+    """Refinement pools the encroached subsegments of the input by one side
+    of each, the side running along its segment (refine.splits.first_side):
+    below 2^-537 that dot product vanished, no interior subsegment had such
+    a side, and none was pooled (under pDQ 10 vertices against 11 at scale
+    1; the bent split of tests/engine/test_split_bent.py never happened at
+    1e-200).  The mesh, and the work counted, are scale 2^-50's times 2^k."""
+    pslg = {"vertices": np.array(INTERIOR_SEGMENT["vertices"]), "segments": np.array(INTERIOR_SEGMENT["segments"])}
+    _, base = _mesh_at(pslg, switches, -50)
+    scaled, out = _mesh_at(pslg, switches, k)
+    assert check_mesh(out, pslg=scaled, min_angle=20 if "q" in switches else None) == []
+    assert np.array_equal(out["triangles"], base["triangles"])
+    assert np.array_equal(out["vertices"], np.ldexp(base["vertices"], k + 50))
+    assert out.work == base.work

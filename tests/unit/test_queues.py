@@ -9,9 +9,9 @@ import pytest
 
 from instrument.core.mesh import Mesh
 from instrument.refine.encroach import enc_edge, enc_free, enc_push, in_lens
-from instrument.refine.order import strategy_id, triangle_bucket
+from instrument.refine.order import strategy_id, triangle_bucket, wide_bucket
 from instrument.refine.queues import queue_clear, queue_compact, queue_pop, queue_push, queue_used
-from instrument.refine.state import Config, Refiner
+from instrument.refine.state import NBUCKETS, Config, Refiner
 from instrument.switches import parse
 from meshkit import triangulated
 
@@ -128,3 +128,33 @@ def test_bucket_reads_the_same_exponent_and_fraction_as_frexp():
     keys += [0.0, -1.0, 5e-324, 1.7976931348623157e308, math.inf, -math.inf, math.nan, 1.0, 2.0, 0.5]
     for key in keys:
         assert triangle_bucket(float(key)) == _bucket_by_frexp(float(key)), key
+
+
+def test_wide_bucket_is_triangles_where_its_buckets_hold_and_goes_on_past_them():
+    # order.wide_bucket: the bucket of |(dx, dy) 2^u|^2 without squaring out of
+    # range.  Where Triangle's bucket does not saturate it is Triangle's; a
+    # power of two 2^k on the edge moves it 4k buckets (two per octave of the
+    # square), also past Triangle's last bucket, 4095, where every squared
+    # edge below 2^-1023.5 used to land (one first in, first out list)
+    rng = np.random.default_rng(11)
+    s2 = math.sqrt(2.0)
+    for _ in range(4000):
+        dx, dy = (rng.random(2) - 0.5) * np.ldexp(1.0, int(rng.integers(-400, 0)))
+        key = dx * dx + dy * dy
+        b = triangle_bucket(key)
+        assert 2048 <= b < 4095
+        assert wide_bucket(dx, dy, 0) == b, (dx, dy)
+        for k in (300, 600, 1000):  # finer edges (while they are normal doubles), and finer units
+            if min(abs(dx), abs(dy)) >= math.ldexp(1.0, k - 1020):
+                assert wide_bucket(math.ldexp(dx, -k), math.ldexp(dy, -k), 0) == b + 4 * k
+            assert wide_bucket(dx, dy, -k) == b + 4 * k
+    # around sqrt 2 and the powers of two, against triangle_bucket too
+    for e in range(-500, -10, 3):
+        for base in (1.0, s2, np.nextafter(s2, 0.0), np.nextafter(s2, 3.0), np.nextafter(1.0, 2.0), np.nextafter(2.0, 0.0)):
+            dx = math.sqrt(math.ldexp(float(base), 2 * e))  # (dx, 0) squares to about 2^2e base
+            b = triangle_bucket(dx * dx)
+            assert wide_bucket(dx, 0.0, 0) == b
+            assert wide_bucket(math.ldexp(dx, -500), 0.0, 0) == b + 2000
+    # the finest edges between doubles, in the finest units, stay in the table
+    assert wide_bucket(5e-324, 0.0, -1025) < NBUCKETS
+    assert wide_bucket(0.0, 0.0, 0) == 4095  # (no edge)

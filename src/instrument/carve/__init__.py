@@ -20,12 +20,12 @@ def carve(ms: MeshState, o: Options, holes: np.ndarray | None, regions: np.ndarr
     slots = m.triangle_capacity
     has_regions = regions is not None and len(regions) > 0
     has_holes = holes is not None and len(holes) > 0 and not o.O
+    start = start_hull_edge(m, m.hull_start)  # hole and region points must lie strictly left of its line
     if has_regions or has_holes:  # the input's bounding box, for locating their points
         # column by column: numpy's reduction along axis 0 of an (n, 2) array is
         # about fifty times slower (6 ms at 10^5 vertices)
         lo = np.array([xy_in[:, 0].min(), xy_in[:, 1].min()])
         hi = np.array([xy_in[:, 0].max(), xy_in[:, 1].max()])
-        start = start_hull_edge(m, o.i)  # hole and region points must lie strictly left of its line
     found_regions = None
     if has_regions:
         found_regions = np.zeros((len(regions), 2), dtype=np.int64)
@@ -34,7 +34,7 @@ def carve(ms: MeshState, o: Options, holes: np.ndarray | None, regions: np.ndarr
     tflag = np.asarray(m.tflag)
     n = 0
     if not o.c:
-        n = infect_hull(m, ms.segs, queue)
+        n = infect_hull(m, ms.segs, queue, start)
     if has_holes:
         found = np.zeros((len(holes), 2), dtype=np.int64)
         locate_points(m, np.ascontiguousarray(holes), lo, hi, found, start)

@@ -70,28 +70,30 @@ def _first_hull_edge(m: Mesh) -> Index:
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
-def start_hull_edge(m: Mesh, incremental: cython.bint) -> Index:
-    """The hull edge from which Triangle starts locating hole and region
-    points (the one its outer-space triangle points at), or NO_EDGE.
+def start_hull_edge(m: Mesh, vertex: Index) -> Index:
+    """The hull edge Triangle's outer-space handle holds after the first
+    triangulation, where its hull walk and its location of hole and region
+    points start; NO_EDGE without a hull.
 
-    After divide and conquer it is the edge leaving the hull vertex with
-    the least (x, y), counter-clockwise, until an edge flip or split next to
-    the boundary bonds another boundary edge to Triangle's outer space
-    (``Mesh.hull_edge`` follows it).  After incremental insertion it is,
-    observed on the `triangle` package, the hull edge arriving at input
-    vertex 0 when that vertex is on the hull; otherwise (no rule was found)
-    the divide-and-conquer one.  Only points strictly left of its line are
-    located, so a hole point on that edge's line is ignored."""
+    After divide and conquer (``vertex`` -1) it is the edge leaving the
+    hull vertex with the least (x, y), counter-clockwise; after incremental
+    insertion the hull edge leaving ``vertex`` (the first one the removal
+    of the bounding triangle met: delaunay/incremental.py).  An edge flip or
+    split next to the boundary bonds another boundary edge to Triangle's
+    outer space, and the handle holds that one from then on
+    (``Mesh.hull_edge`` follows it through segment recovery).  Only points
+    strictly left of its line are located, so a hole point on that edge's
+    line is ignored."""
     e: Index = m.hull_edge
-    if not incremental and e >= 0 and m.stamp[e // 3] > 0 and m.twin[e] == NO_EDGE:
+    if e >= 0 and m.stamp[e // 3] > 0 and m.twin[e] == NO_EDGE:
         return e
-    if incremental:
+    if vertex >= 0:
         for t in range(m.nslot):
             if m.stamp[t] <= 0:
                 continue
             for k in range(3):
                 e = 3 * t + k
-                if m.twin[e] == NO_EDGE and m.corner[lprev(e)] == 0:
+                if m.twin[e] == NO_EDGE and m.corner[lnext(e)] == vertex:
                     return e
     return _first_hull_edge(m)
 
@@ -99,16 +101,16 @@ def start_hull_edge(m: Mesh, incremental: cython.bint) -> Index:
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
-def infect_hull(m: Mesh, segs: Subsegments, queue: cython.longlong[::1]) -> Index:
-    """Walk the convex hull counter-clockwise from ``start_hull_edge``, as
-    Triangle does: a triangle on a hull
+def infect_hull(m: Mesh, segs: Subsegments, queue: cython.longlong[::1], start: Index) -> Index:
+    """Walk the convex hull counter-clockwise from hull edge ``start``
+    (``start_hull_edge``), as Triangle does: a triangle on a hull
     edge that is not a subsegment is infected and appended to ``queue``; a
     hull subsegment with marker 0 becomes a boundary, but only if its
     triangle was not infected earlier in the walk (through another of its
     hull edges), so the walk's order decides some endpoints' markers.
     Returns the queue length."""
     n: Index = 0
-    e0: Index = start_hull_edge(m, False)
+    e0: Index = start
     e: Index = e0
     t: Index
     f: Index

@@ -106,7 +106,9 @@ def _exempt(m: MeshView, t: int, ang, chains: Chains, wedges, mpw, subsegs) -> b
         for c1, J1, d1 in mpw.get(p1, ()):
             for c2, J2, d2 in mpw.get(p2, ()):
                 # squared distances within a factor 1 +- MPW_RATIO, as Triangle
-                if c1 != c2 and J1 == J2 and d2 > 0 and (
+                # (the ratio first: distances 1e-300 and 1e300 apart made
+                # its square overflow, an OverflowError out of the checker)
+                if c1 != c2 and J1 == J2 and d2 > 0 and 0.5 < d1 / d2 < 2.0 and (
                         1 - MPW_RATIO < (d1 / d2) ** 2 < 1 + MPW_RATIO):
                     return True
     return False

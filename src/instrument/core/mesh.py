@@ -122,6 +122,10 @@ class Mesh:
         self.work = new_work() if work is None else work
         self.rng = 12345
         self.hull_edge = -1
+        # Triangle's outer-space handle after the first triangulation: the
+        # hull edge leaving this vertex (incremental insertion sets it), or
+        # -1: the edge leaving the least (x, y) vertex (divide and conquer)
+        self.hull_start = -1
 
     def partner(self) -> Mesh:
         """A mesh over the same tables with counts and work of its own, for a
@@ -142,6 +146,7 @@ class Mesh:
         other.work = new_work()
         other.rng = self.rng
         other.hull_edge = -1
+        other.hull_start = -1
         return other
 
     # ------------------------------------------------------------ capacity

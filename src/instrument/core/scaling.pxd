@@ -3,6 +3,7 @@ from libc.math cimport fabs
 
 cpdef double unit_scale(double m) noexcept nogil
 cpdef double scaled_dot(double ux, double uy, double vx, double vy) noexcept nogil
+cpdef (double, double) crossing_terms(double ax, double ay, double bx, double by, double rx, double ry, double lx, double ly, double ox, double oy) noexcept nogil
 
 
 cdef inline (double, double, double, double) scaled_pair(double ux, double uy, double vx, double vy, double limit) noexcept nogil:

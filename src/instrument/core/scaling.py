@@ -19,7 +19,7 @@ from __future__ import annotations
 import math
 
 import cython
-from cython.cimports.libc.math import frexp, ldexp
+from cython.cimports.libc.math import fabs, frexp, ldexp
 
 @cython.ccall
 @cython.nogil
@@ -62,3 +62,48 @@ def scaled_dot(ux: cython.double, uy: cython.double, vx: cython.double, vy: cyth
     at any scale, its magnitude only in range."""
     ux, uy, vx, vy = scaled_pair(ux, uy, vx, vy, 2.0**500)
     return ux * vx + uy * vy
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def crossing_terms(
+    ax: cython.double, ay: cython.double, bx: cython.double, by: cython.double,
+    rx: cython.double, ry: cython.double, lx: cython.double, ly: cython.double,
+    ox: cython.double, oy: cython.double,
+) -> tuple[cython.double, cython.double]:
+    """``(num, den)`` with ``t = num / den`` where the line a -> b crosses the
+    line r -> l, as a parameter along r -> l: ``num = ey wx - ex wy`` and
+    ``den = ty ex - tx ey`` for ``e = b - a``, ``T = l - r`` and ``w = r - o``
+    (o is a or b: the caller's choice fixes the rounding it reproduces).
+
+    Both are of degree 2 in the coordinate differences: near 2^512 they
+    overflow, and below about 2^-537 they vanish.  Where the largest
+    difference leaves [2^-240, 2^240] all six are scaled by one power of two
+    (quartered first where a difference overflowed), which leaves their
+    ratio and signs unchanged."""
+    ex: cython.double = bx - ax
+    ey: cython.double = by - ay
+    tx: cython.double = lx - rx
+    ty: cython.double = ly - ry
+    wx: cython.double = rx - ox
+    wy: cython.double = ry - oy
+    mx: cython.double = max(max(max(fabs(ex), fabs(ey)), max(fabs(tx), fabs(ty))), max(fabs(wx), fabs(wy)))
+    f: cython.double
+    if not (mx <= 2.0**240 and mx >= 2.0**-240):
+        if not mx <= 1.7976931348623157e308:
+            ex = 0.25 * bx - 0.25 * ax
+            ey = 0.25 * by - 0.25 * ay
+            tx = 0.25 * lx - 0.25 * rx
+            ty = 0.25 * ly - 0.25 * ry
+            wx = 0.25 * rx - 0.25 * ox
+            wy = 0.25 * ry - 0.25 * oy
+            mx = max(max(max(fabs(ex), fabs(ey)), max(fabs(tx), fabs(ty))), max(fabs(wx), fabs(wy)))
+        f = unit_scale(mx)
+        ex *= f
+        ey *= f
+        tx *= f
+        ty *= f
+        wx *= f
+        wy *= f
+    return ey * wx - ex * wy, ty * ex - tx * ey

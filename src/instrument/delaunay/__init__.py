@@ -6,24 +6,28 @@ Two methods:
   tie rules the triangulation of cocircular points is the one Triangle
   makes; cuts alternate between vertical and horizontal unless
   ``vertical`` (``-l``);
-* randomized incremental insertion (``incremental``, ``-i``).
+* incremental insertion (``incremental``, ``-i``), as Triangle's
+  incremental method inserts: the same triangles in the same records.
 
-Ghost triangles keep the outside of the hull symbolic while the mesh is
-built; they are removed at the end, leaving ``NO_EDGE`` across the convex
-hull.  Exact duplicates are never inserted: ``duplicate_of[i]`` names the
-surviving copy (the lowest input index), as Triangle keeps duplicates in
-the output numbering but out of the mesh.
+Divide and conquer keeps the outside of the hull symbolic with ghost
+triangles while the mesh is built, the incremental method with a bounding
+triangle (as Triangle); either is removed at the end, leaving ``NO_EDGE``
+across the convex hull.  Exact duplicates are never inserted:
+``duplicate_of[i]`` names the surviving copy (the lowest input index), as
+Triangle keeps duplicates in the output numbering but out of the mesh.
 
-Both kernels see the points renumbered (in cut order, or insertion order),
-which keeps the points of each group together in memory; the vertex ids
-are mapped back at the end.
+Divide and conquer sees the points renumbered (in cut order), which keeps
+the points of each group together in memory; the vertex ids are mapped
+back at the end.
 """
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
-from ..core.mesh import Mesh, relabel_corners, remove_ghosts, remove_ghosts_around_hull
+from ..core.mesh import Mesh, relabel_corners, remove_ghosts_around_hull
 from ..core.filled import filled
 from ..counters import C_DUPLICATE
 from . import divconq, parallel
@@ -48,20 +52,23 @@ def delaunay(
 
     Returns the mesh (ghosts removed; no triangles if the points are all
     collinear) and ``duplicate_of``: -1, or the index of the copy of that
-    point which is in the mesh (the lowest index of the copies).
-    ``method`` is one of ``METHODS``; ``seed`` drives the incremental
-    method's insertion order.  ``extra_vertices`` and ``extra_triangles``
-    reserve room for later stages; ``tables`` are ``Mesh``'s optional
-    tables (``parents``, ``area_bounds``, ``attributes``, ``constraints``;
-    the incremental method always has the constraint tables: its flips
-    keep subsegment records).  Divide and
-    conquer runs on up to ``threads`` threads on large inputs (parallel.py),
-    with the same result as on one.
+    point which is in the mesh (the lowest index of the copies).  The
+    mesh's ``hull_start`` is the vertex whose counter-clockwise hull edge
+    Triangle's outer-space handle holds afterwards (where its hull walks
+    and its location of hole and region points start), or -1 when that is
+    the edge leaving the least (x, y) vertex (divide and conquer; no hull).
+    ``method`` is one of ``METHODS``; ``seed`` is not used (neither method
+    is randomized: Triangle's incremental method inserts in input order).
+    ``extra_vertices`` and ``extra_triangles`` reserve room for later
+    stages; ``tables`` are ``Mesh``'s optional tables (``parents``,
+    ``area_bounds``, ``attributes``, ``constraints``).  Divide and conquer
+    runs on up to ``threads`` threads on large inputs (parallel.py), with
+    the same result as on one.
     """
     if method not in METHODS:
         raise ValueError(f"unknown Delaunay method {method!r}")
     if method == "incremental":
-        return _incremental(xy, work, seed, extra_vertices, extra_triangles, tables)
+        return _incremental(xy, work, extra_vertices, extra_triangles, tables)
     n = xy.shape[0]
     xy = np.ascontiguousarray(xy, dtype=np.float64)
     order = _lexicographic_order(xy).astype(np.int64, copy=False)
@@ -130,55 +137,49 @@ def _restore_numbering(m: Mesh, xy: np.ndarray, ids: np.ndarray) -> None:
     m.nvert = n
 
 
-def _incremental(xy, work, seed, extra_vertices, extra_triangles, tables) -> tuple[Mesh, np.ndarray]:
-    """The randomized incremental method (see incremental.py; imported here,
-    as only -i runs it)."""
+def _incremental(xy, work, extra_vertices, extra_triangles, tables) -> tuple[Mesh, np.ndarray]:
+    """Triangle's incremental method (see incremental.py; imported here, as
+    only -i runs it).  The points are inserted in input order, so the copy
+    of a duplicated point that stays is the first, the lowest index."""
     from . import incremental
 
     n = xy.shape[0]
-    tables = dict(tables, constraints=True)
-    order = incremental.insertion_order(xy, np.arange(n), seed)  # first: its temporaries die before the mesh exists
-    m = Mesh(xy[order], 2 * n + 8 + extra_triangles, vertices=n + extra_vertices, work=work, **tables)
+    xy = np.ascontiguousarray(xy, dtype=np.float64)
+    scale = _working_scale(xy)
+    if scale is None:
+        return delaunay(xy, work, method="divconq", extra_vertices=extra_vertices,
+                        extra_triangles=extra_triangles, **tables)  # fmt: skip
+    pts = xy * scale if scale != 1.0 else xy
+    m = Mesh(pts, 2 * n + 8 + extra_triangles, vertices=n + 3 + extra_vertices, work=work, **tables)
     dup = np.full(n, -1, dtype=np.int64)
-    found = incremental.triangulate(m, seed)
-    if found is not None:  # else all collinear (or fewer than 3 distinct points): no triangles, no error
-        remove_ghosts(m)
-        _restore_numbering(m, xy, order)
-        copies = np.flatnonzero(found >= 0)
-        dup[order[copies]] = order[found[copies]]
-    else:
+    if n:
+        dup, m.hull_start = incremental.triangulate(m, incremental.box_corners(pts))
+    if scale != 1.0:
         np.asarray(m.xy)[:n] = xy
-        dup[:] = _copies(xy)  # no walk found them, but -j and the warnings still need them
-        work[C_DUPLICATE] += int((dup >= 0).sum())
-    m.rng = 12345  # the later stages' walks start their own sequence, as before this stage had one
-    _keep_lowest_copy(m, dup)
+    m.rng = 12345  # the later stages' walks start their own sequence
     return m, dup
 
 
-def _copies(xy: np.ndarray) -> np.ndarray:
-    """Per row: -1, or the lowest index of an earlier row with the same coordinates."""
-    _, first, inverse = np.unique(xy, axis=0, return_index=True, return_inverse=True)
-    keeper = first[inverse.reshape(-1)]
-    return np.where(keeper == np.arange(len(xy)), -1, keeper).astype(np.int64)
+#: Beyond 2^+-RANGE (coordinates' largest magnitude) the incremental method
+#: works on scaled coordinates.
+RANGE = 480
 
 
-def _keep_lowest_copy(m: Mesh, dup: np.ndarray) -> None:
-    """Make the lowest input index of each set of equal points the one in the
-    mesh (the walk keeps whichever copy came first in insertion order)."""
-    copies = np.flatnonzero(dup >= 0)
-    if copies.size == 0:
-        return
-    best = np.arange(dup.size)
-    np.minimum.at(best, dup[copies], copies)
-    kept = dup[copies]
-    moved = kept[best[kept] != kept]
-    if moved.size == 0:
-        return
-    label = np.arange(dup.size, dtype=np.int64)
-    label[moved] = best[moved]
-    relabel_corners(m, label)
-    group = np.concatenate([copies, np.unique(moved)])
-    root = np.where(dup[group] >= 0, dup[group], group)
-    dup[group] = best[root]
-    dup[best[root]] = -1
-
+def _working_scale(xy: np.ndarray) -> float | None:
+    """The power of two the incremental method multiplies the points by: 1
+    while the largest magnitude M is within 2^+-RANGE, as Triangle (whose
+    squared distances, with the bounding triangle 100 M wide, stay finite
+    and normal there), else the one that brings M into [0.5, 1), so that
+    the method neither overflows nor walks from the box for every point
+    (all distances infinite or zero): the steps Triangle would take on the
+    scaled points (subnormal ones are scaled up by 2^1000 at most).  None
+    if that scaling is not exact (subnormal coordinates beside huge ones):
+    divide and conquer then."""
+    if xy.size == 0:
+        return 1.0
+    big = float(np.abs(xy).max())
+    e = math.frexp(big)[1]
+    if big == 0.0 or -RANGE <= e <= RANGE:
+        return 1.0
+    f = math.ldexp(1.0, min(-e, 1000))
+    return f if np.array_equal((xy * f) / f, xy) else None

@@ -1,12 +1,56 @@
 # cython: language_level=3
-"""Delaunay triangulation by randomized incremental insertion (``-i``).
+"""Delaunay triangulation by incremental insertion (``-i``), made the way
+Triangle's incremental method makes it: the same triangles in the same
+records, in the same rotation, and the same records left free.
 
-Points are inserted in a biased randomized insertion order (BRIO: rounds of
-doubling size, each sorted along a Hilbert curve; ``insertion_order``),
-located by walking from the previous insertion, and inserted with Lawson
-flips.  Ghost triangles keep the outside of the hull symbolic while the
-mesh is built (see mesh.py).  A point equal to an inserted vertex is not
-inserted; the caller learns which vertex it duplicates.
+Why the records: the Delaunay triangulation is unique up to cocircular
+ties, but refinement makes its first list of bad triangles in record
+order, the ``u`` test reads a triangle's origin, and new triangles reuse
+freed records last-in first-out, so a refined mesh depends on where each
+triangle of the first triangulation sits and how it is turned.
+
+What Triangle does was read off its ``-VVVV`` trace (every record it
+writes, every point-location step; ``scripts/incremental_trace.py``
+replays ours against it) and the spec (sections 4.2 and 4.3); none of
+its code is used.  In Triangle's terms a triangle record holds corners
+v0, v1, v2 and a handle (record, k) has org v[k+1], dest v[k+2], apex
+v[k]; ours stores corners (v1, v2, v0) (the output order), so handle
+(t, k) is our edge 3t + (k + 2) % 3, with the same org, dest and apex.
+
+* A bounding triangle, record 0, with corners B1 (xmin - 50w, ymin - 40w),
+  B2 (xmax + 50w, ymin - 40w), B3 ((xmin + xmax) / 2, ymax + 60w), w the
+  larger extent (1 if both are 0); the outside is "outer space", and one
+  handle on a box edge (``dummy``, Triangle's outer-space pointer) is
+  updated whenever a record takes over a box edge.
+* The points are inserted in input order.  Point location: the start is
+  the nearest, by its origin's squared distance, of the dummy handle, the
+  last insertion's handle (``recent``) and s records sampled with
+  Triangle's random generator (s grows while 11 s^3 is below the number
+  of triangles; the samples are drawn per memory block of Triangle's
+  pool), then a walk (``_walk``).  A point equal to a vertex is a
+  duplicate and is not inserted.
+* Inside triangle (a, b, c) (the located handle's org, dest, apex): the
+  record keeps a and b and takes the point as apex; two new records get
+  (q, b, c) and (q, c, a) (in Triangle's corner order).  On edge a-b
+  between (a, b, c) and (b, a, d): the first record's org and the second's
+  dest become q, and two new records get (q, a, d) and (q, c, a).
+* Flips: the edges facing the new point are tested counter-clockwise
+  around it, from the located record's edge opposite it, until the edge
+  ending where that one began is found locally Delaunay; after a flip of
+  x-y (far vertex d) the edge x-d is tested next.  Flipping a handle with
+  (org, dest, apex) = (o, t, x) across to far vertex y rewrites it as
+  (y, x, o), on both sides.  Box corners count as infinitely far: an
+  edge with one is tested by orientation (``_should_flip``).
+* At the end the records touching the box are freed in the order of a
+  walk around the box corners, from the dummy handle's record (freed
+  last); the first hull edge that walk meets becomes the outer-space
+  handle, the edge Triangle starts its hull walks and its hole location
+  from (``triangulate`` returns its origin).
+
+The tests are the exact predicates, where Triangle's adaptive ones agree
+with them (docs/fidelity.md names the ties where they do not).  The work
+counters count this method's own tests, walk steps, flips and finite
+triangles made and unmade.
 """
 
 from __future__ import annotations
@@ -14,235 +58,550 @@ from __future__ import annotations
 import numpy as np
 
 import cython
-from cython.cimports.instrument.core.insert import lawson, split_edge, split_triangle, star_edges
-from cython.cimports.instrument.core.locate import LOC_FAILED, LOC_ON_EDGE, LOC_ON_VERTEX, LOC_OUTSIDE, finite_start, walk
-from cython.cimports.instrument.core.mesh import GHOST, Index, Mesh, bond, lnext, new_triangle
-from cython.cimports.instrument.core.predicates import orient2d
-from cython.cimports.instrument.counters import C_CREATED, C_DUPLICATE, C_ORIENT
+from cython.cimports.instrument.core.mesh import NO_EDGE, Index, Mesh, bond, kill_triangle, lnext, lprev, new_triangle
+from cython.cimports.instrument.core.predicates import incircle, orient2d
+from cython.cimports.instrument.counters import C_CREATED, C_DELETED, C_DUPLICATE, C_FLIP, C_INCIRCLE, C_ORIENT, C_WALK
 
-# ------------------------------------------------------------ insertion order
+# where a point lies
+INSIDE = cython.declare(cython.int, 0)
+ON_EDGE = cython.declare(cython.int, 1)
+ON_VERTEX = cython.declare(cython.int, 2)
+# the stage's state, one int64 array: Triangle's random generator, the
+# sample count, the recent handle, the outer-space handle, the size of the
+# pool's first block
+ST_SEED = cython.declare(cython.int, 0)
+ST_SAMPLES = cython.declare(cython.int, 1)
+ST_RECENT = cython.declare(cython.int, 2)
+ST_DUMMY = cython.declare(cython.int, 3)
+ST_FIRST_BLOCK = cython.declare(cython.int, 4)
 
-
-@cython.cfunc
-@cython.nogil
-@cython.exceptval(check=False)
-def _hilbert_key(x: cython.longlong, y: cython.longlong, side: cython.longlong) -> cython.longlong:
-    """Index of cell (x, y) along a side x side Hilbert curve (side a power of two)."""
-    d: cython.longlong = 0
-    s: cython.longlong = side >> 1
-    rx: cython.longlong
-    ry: cython.longlong
-    while s > 0:
-        rx = 1 if (x & s) else 0
-        ry = 1 if (y & s) else 0
-        d += s * s * ((3 * rx) ^ ry)
-        if ry == 0:
-            if rx == 1:
-                x = side - 1 - x
-                y = side - 1 - y
-            x, y = y, x
-        s >>= 1
-    return d
+#: Triangle's pool blocks: the first holds max(BLOCK, 2n - 2) triangles, the others BLOCK.
+BLOCK = cython.declare(cython.Py_ssize_t, 4092)
 
 
-def hilbert_keys(xy, ids, xmin: float, ymin: float, scale: float):
-    """Index along a 2^16 x 2^16 Hilbert curve of each point in ``ids``."""
-    side: cython.longlong = 1 << 16
-    pts: cython.double[:, ::1] = np.ascontiguousarray(xy, dtype=np.float64)
-    which: cython.longlong[::1] = np.ascontiguousarray(ids, dtype=np.int64)
-    keys = np.empty(which.shape[0], dtype=np.int64)
-    out: cython.longlong[::1] = keys
-    x0: cython.double = xmin
-    y0: cython.double = ymin
-    s: cython.double = scale
-    x: cython.longlong
-    y: cython.longlong
-    i: Index
-    with cython.nogil:
-        for j in range(which.shape[0]):
-            i = which[j]
-            x = cython.cast(cython.longlong, (pts[i, 0] - x0) * s)
-            y = cython.cast(cython.longlong, (pts[i, 1] - y0) * s)
-            x = min(max(x, 0), side - 1)
-            y = min(max(y, 0), side - 1)
-            out[j] = _hilbert_key(x, y, side)
-    return keys
-
-
-def insertion_order(xy, ids, seed: int = 0):
-    """BRIO of ``ids`` (Amenta, Choi and Rote): each point joins round r with
-    probability 2^-(r+1), later rounds first being the smaller; within a
-    round, points follow a Hilbert curve.  One sort on (round, curve index)."""
-    ids = np.asarray(ids, dtype=np.int64)
-    if ids.size == 0:
-        return ids
-    pts = xy[ids]
-    # column by column: a reduction along axis 0 of an (n, 2) array is many times slower
-    lo = (float(pts[:, 0].min()), float(pts[:, 1].min()))
-    span = max(float(pts[:, 0].max()) - lo[0], float(pts[:, 1].max()) - lo[1])
-    scale = 65535.0 / span if span > 0 else 0.0
-    if not np.isfinite(scale):
-        scale = 0.0
-    keys = hilbert_keys(xy, ids, float(lo[0]), float(lo[1]), scale)
-    # round of each point: position in a random permutation, halved per round
-    pos = np.random.default_rng(seed).permutation(ids.size)
-    rounds = np.floor(np.log2(np.maximum(pos, 1))).astype(np.int64)
-    rounds[pos < 64] = 0  # the first few points form one round
-    return ids[np.argsort((rounds << 32) | keys, kind="stable")]
-
-
-# ------------------------------------------------------------------ building
-
-
-@cython.cfunc
-@cython.nogil
-@cython.exceptval(check=False)
-def _first_triangle(m: Mesh, n: Index) -> tuple[Index, Index, Index]:
-    """Make the first triangle from point 0, the first point different from
-    it and the first point not collinear with both, plus its three ghosts.
-
-    Returns (its slot, the second point, the third), or (-1, -1, -1) if
-    every point is collinear."""
-    xy = m.xy
-    a: Index = 0
-    jb: Index = 1
-    while jb < n and xy[jb, 0] == xy[a, 0] and xy[jb, 1] == xy[a, 1]:
-        jb += 1
-    b: Index
-    s: cython.double
-    t: Index
-    g_ab: Index
-    g_bc: Index
-    g_ca: Index
-    for c in range(jb + 1, n):
-        b = jb
-        m.work[C_ORIENT] += 1
-        s = orient2d(xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[c, 0], xy[c, 1])
-        if s != 0.0:
-            if s < 0.0:
-                a, b = b, a
-            t = new_triangle(m, a, b, c)
-            m.work[C_CREATED] += 1
-            g_ab = new_triangle(m, b, a, GHOST)
-            g_bc = new_triangle(m, c, b, GHOST)
-            g_ca = new_triangle(m, a, c, GHOST)
-            bond(m, 3 * t + 2, 3 * g_ab + 2)
-            bond(m, 3 * t + 0, 3 * g_bc + 2)
-            bond(m, 3 * t + 1, 3 * g_ca + 2)
-            bond(m, 3 * g_ab + 0, 3 * g_ca + 1)
-            bond(m, 3 * g_ca + 0, 3 * g_bc + 1)
-            bond(m, 3 * g_bc + 0, 3 * g_ab + 1)
-            return t, jb, c
-    return -1, -1, -1
-
-
-@cython.cfunc
-@cython.nogil
-@cython.exceptval(check=False)
-def _scan_locate(m: Mesh, px: cython.double, py: cython.double) -> tuple[cython.int, Index]:
-    """Fallback location: test every live finite triangle (never expected)."""
-    xy = m.xy
-    a: Index
-    b: Index
-    c: Index
-    s0: cython.double
-    s1: cython.double
-    s2: cython.double
-    for t in range(m.nslot):
-        if m.stamp[t] <= 0:
-            continue
-        a, b, c = m.corner[3 * t], m.corner[3 * t + 1], m.corner[3 * t + 2]
-        if a == GHOST or b == GHOST or c == GHOST:
-            continue
-        m.work[C_ORIENT] += 3
-        s0 = orient2d(xy[b, 0], xy[b, 1], xy[c, 0], xy[c, 1], px, py)
-        s1 = orient2d(xy[c, 0], xy[c, 1], xy[a, 0], xy[a, 1], px, py)
-        s2 = orient2d(xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], px, py)
-        if s0 >= 0 and s1 >= 0 and s2 >= 0:
-            return walk(m, t, px, py, 2)  # classifies at once
-    # outside the hull: find a hull edge that sees the point
-    e: Index
-    o: Index
-    d: Index
-    for t in range(m.nslot):
-        if m.stamp[t] <= 0:
-            continue
-        for k in range(3):
-            if m.corner[3 * t + k] == GHOST:
-                e = 3 * t + k
-                o = m.corner[3 * t + (k + 1) % 3]
-                d = m.corner[3 * t + (k + 2) % 3]
-                m.work[C_ORIENT] += 1
-                if orient2d(xy[o, 0], xy[o, 1], xy[d, 0], xy[d, 1], px, py) > 0:
-                    return LOC_OUTSIDE, e
-    return LOC_FAILED, -1
+# ------------------------------------------------------------ small helpers
 
 
 @cython.cfunc
 @cython.inline
 @cython.nogil
 @cython.exceptval(check=False)
-def _insert_point(m: Mesh, q: Index, hint: Index, stack: cython.longlong[::1]) -> tuple[cython.int, Index]:
-    """Insert vertex ``q`` into a Delaunay triangulation with ghosts.
+def _org(m: Mesh, e: Index) -> Index:
+    return m.corner[lnext(e)]
 
-    Returns ``(status, t)``: ``status`` is the location result (LOC_ON_VERTEX
-    means ``q`` duplicates the origin of edge ``t`` and was not inserted) and
-    ``t`` a triangle incident to ``q``, the next walk's start.
-    """
-    px: cython.double = m.xy[q, 0]
-    py: cython.double = m.xy[q, 1]
-    start: Index = finite_start(m, hint)
-    status: cython.int
-    e: Index
-    status, e = walk(m, start, px, py, 4 * m.stamp.shape[0] + 64)
-    if status == LOC_FAILED:
-        status, e = _scan_locate(m, px, py)
-    if status == LOC_ON_VERTEX:
-        m.work[C_DUPLICATE] += 1
-        return status, e
-    first: Index
-    if status == LOC_ON_EDGE:
-        first = split_edge(m, e, q) // 3
-    else:  # inside a finite triangle, or inside a ghost (outside the hull)
-        first = split_triangle(m, e // 3, q)
-    n: Index = star_edges(m, first, stack)
-    return status, lawson(m, stack, n)
+
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _dest(m: Mesh, e: Index) -> Index:
+    return m.corner[lprev(e)]
+
+
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _random(st: cython.longlong[::1], choices: Index) -> Index:
+    """Triangle's generator: a number in 0 .. choices - 1."""
+    st[ST_SEED] = (st[ST_SEED] * 1366 + 150889) % 714025
+    return st[ST_SEED] // (714025 // choices + 1)
+
+
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _distance(m: Mesh, v: Index, px: cython.double, py: cython.double) -> cython.double:
+    """Squared distance from vertex v to p, in plain floating point as Triangle computes it."""
+    dx: cython.double = px - m.xy[v, 0]
+    dy: cython.double = py - m.xy[v, 1]
+    return dx * dx + dy * dy
+
+
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _orient(m: Mesh, a: Index, b: Index, px: cython.double, py: cython.double) -> cython.double:
+    m.work[C_ORIENT] += 1
+    return orient2d(m.xy[a, 0], m.xy[a, 1], m.xy[b, 0], m.xy[b, 1], px, py)
+
+
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _same(m: Mesh, v: Index, px: cython.double, py: cython.double) -> cython.bint:
+    return m.xy[v, 0] == px and m.xy[v, 1] == py
+
+
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _rewrite(m: Mesh, t: Index, c0: Index, c1: Index, c2: Index, nb: Index) -> cython.void:
+    """Give record t the corners (c0, c1, c2), counting a finite triangle that
+    goes and one that comes (corners ``>= nb`` are the box's)."""
+    e: Index = 3 * t
+    if m.corner[e] < nb and m.corner[e + 1] < nb and m.corner[e + 2] < nb:
+        m.work[C_DELETED] += 1
+    if c0 < nb and c1 < nb and c2 < nb:
+        m.work[C_CREATED] += 1
+    m.corner[e] = cython.cast(cython.int, c0)
+    m.corner[e + 1] = cython.cast(cython.int, c1)
+    m.corner[e + 2] = cython.cast(cython.int, c2)
+
+
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _make(m: Mesh, c0: Index, c1: Index, c2: Index, nb: Index) -> Index:
+    """A new record (there is always room: the mesh has 2n + 8 slots)."""
+    t: Index = new_triangle(m, c0, c1, c2)
+    if c0 < nb and c1 < nb and c2 < nb:
+        m.work[C_CREATED] += 1
+    return t
+
+
+# ------------------------------------------------------------ point location
 
 
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
-def _insert_all(m: Mesh, n: Index, jb: Index, jc: Index, t: Index, stack: cython.longlong[::1], dup: cython.longlong[::1]) -> cython.void:
-    """Insert points ``1 .. n-1`` except the first triangle's corners; a point
-    equal to an inserted vertex is recorded in ``dup`` and left out."""
-    status: cython.int
-    t2: Index
-    for q in range(1, n):
-        if q == jb or q == jc:
-            continue
-        status, t2 = _insert_point(m, q, t, stack)
-        if status == LOC_ON_VERTEX:
-            dup[q] = m.corner[lnext(t2)]
+def _walk(m: Mesh, e: Index, px: cython.double, py: cython.double, st: cython.longlong[::1]) -> tuple[cython.int, Index]:
+    """Walk from handle e (p to its left) to p, as Triangle's ``preciselocate``:
+    at (o, d, a), cross o-a if p is beyond it only, a-d if beyond it only,
+    and if beyond both the one the dot product (a - p).(d - o) picks.
+    Returns (INSIDE, e), (ON_EDGE, the edge), or (ON_VERTEX, an edge whose
+    origin equals p; it becomes the recent handle).  The walk cannot leave
+    the box, which contains every point; it is bounded all the same."""
+    xy = m.xy
+    o: Index
+    d: Index
+    a: Index
+    left: cython.bint
+    sl: cython.double
+    sr: cython.double
+    steps: Index = 4 * m.nslot + 64
+    while steps > 0:
+        steps -= 1
+        m.work[C_WALK] += 1
+        o = _org(m, e)
+        d = _dest(m, e)
+        a = m.corner[e]
+        if _same(m, a, px, py):
+            st[ST_RECENT] = lprev(e)
+            return ON_VERTEX, lprev(e)
+        sl = _orient(m, o, a, px, py)
+        sr = _orient(m, a, d, px, py)
+        if sl > 0.0:
+            if sr > 0.0:
+                left = (xy[a, 0] - px) * (xy[d, 0] - xy[o, 0]) + (xy[a, 1] - py) * (xy[d, 1] - xy[o, 1]) > 0.0
+            else:
+                left = True
+        elif sr > 0.0:
+            left = False
+        elif sl == 0.0:
+            return ON_EDGE, lprev(e)
+        elif sr == 0.0:
+            return ON_EDGE, lnext(e)
         else:
-            t = t2
+            return INSIDE, e
+        e = m.twin[lprev(e)] if left else m.twin[lnext(e)]
+        if e == NO_EDGE:
+            break
+    return _scan(m, px, py)
 
 
-def triangulate(m: Mesh, seed: int):
-    """Triangulate the vertices of ``m`` (in insertion order) with ghosts around
-    the hull, by Lawson insertion; returns ``dup`` (per vertex: -1, or the
-    vertex it duplicates), or None when every point is collinear (no
-    triangle then).  ``m`` has room for 2n + 8 triangles."""
-    n: Index = m.nvert
-    m.rng = seed * 2654435761 + 1
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _scan(m: Mesh, px: cython.double, py: cython.double) -> tuple[cython.int, Index]:
+    """Fallback location by testing every record (never expected: a walk in a
+    Delaunay triangulation reaches its point)."""
+    s0: cython.double
+    s1: cython.double
+    s2: cython.double
+    e: Index
     t: Index
-    jb: Index
-    jc: Index
-    t, jb, jc = _first_triangle(m, n)
-    if t < 0:
-        return None
-    stack: cython.longlong[::1] = np.empty(n + 8, dtype=np.int64)
+    k: Index
+    for t in range(m.nslot):
+        e = 3 * t
+        for k in range(3):
+            if _same(m, m.corner[e + k], px, py):
+                return ON_VERTEX, lprev(e + k)
+        s0 = _orient(m, m.corner[e + 1], m.corner[e + 2], px, py)
+        s1 = _orient(m, m.corner[e + 2], m.corner[e], px, py)
+        s2 = _orient(m, m.corner[e], m.corner[e + 1], px, py)
+        if s0 >= 0.0 and s1 >= 0.0 and s2 >= 0.0:
+            if s0 == 0.0:
+                return ON_EDGE, e
+            if s1 == 0.0:
+                return ON_EDGE, e + 1
+            if s2 == 0.0:
+                return ON_EDGE, e + 2
+            return INSIDE, e
+    return INSIDE, 0  # unreachable: the box contains every point
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _locate(m: Mesh, px: cython.double, py: cython.double, st: cython.longlong[::1]) -> tuple[cython.int, Index]:
+    """Triangle's ``locate`` in a mesh without dead records: the start is the
+    nearest (strictly, in this order) of the outer-space handle, the recent
+    handle and the sampled records (each at its handle 0), by their origins.
+    A point equal to the start's origin or destination is ON_VERTEX; a point
+    on the start edge's line strictly between its ends is ON_EDGE; a point
+    right of it starts from the other side; then ``_walk``."""
+    start: Index = st[ST_DUMMY]
+    best: cython.double = _distance(m, _org(m, start), px, py)
+    dist: cython.double
+    recent: Index = st[ST_RECENT]
+    if recent >= 0:
+        if _same(m, _org(m, recent), px, py):
+            return ON_VERTEX, recent
+        dist = _distance(m, _org(m, recent), px, py)
+        if dist < best:
+            start = recent
+            best = dist
+    # samples, block by block of Triangle's pool (every record is alive here)
+    items: Index = m.nslot
+    s: Index = st[ST_SAMPLES]
+    while 11 * s * s * s < items:
+        s += 1
+    st[ST_SAMPLES] = s
+    base: Index = 0
+    block: Index = st[ST_FIRST_BLOCK]
+    population: Index
+    t: Index
+    i: Index
+    while base < items:
+        population = min(block, items - base)
+        for i in range((s * population - 1) // items + 1):
+            t = base + _random(st, population)
+            dist = _distance(m, m.corner[3 * t], px, py)  # handle 0's origin: corner 0
+            if dist < best:
+                start = 3 * t + 2
+                best = dist
+        base += population
+        block = BLOCK
+    o: Index = _org(m, start)
+    d: Index = _dest(m, start)
+    if _same(m, o, px, py):
+        st[ST_RECENT] = start
+        return ON_VERTEX, start
+    if _same(m, d, px, py):
+        st[ST_RECENT] = lnext(start)
+        return ON_VERTEX, lnext(start)
+    ahead: cython.double = _orient(m, o, d, px, py)
+    xy = m.xy
+    if ahead < 0.0:
+        start = m.twin[start]
+    elif ahead == 0.0:
+        if ((xy[o, 0] < px) == (px < xy[d, 0])) and ((xy[o, 1] < py) == (py < xy[d, 1])):
+            return ON_EDGE, start
+    return _walk(m, start, px, py, st)
+
+
+# ------------------------------------------------------------ insertion
+
+
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _take_box_edge(m: Mesh, e: Index, st: cython.longlong[::1]) -> cython.void:
+    """Edge e now holds a box edge (no twin): outer space points at it."""
+    if m.twin[e] == NO_EDGE:
+        st[ST_DUMMY] = e
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _split_triangle(m: Mesh, e: Index, q: Index, nb: Index, st: cython.longlong[::1]) -> cython.void:
+    """Point q inside the triangle of handle e = (a, b, c): the record keeps
+    (a, b, q), new records (b, c, q) and (c, a, q) in our corner order."""
+    t: Index = e // 3
+    a: Index = _org(m, e)
+    b: Index = _dest(m, e)
+    c: Index = m.corner[e]
+    w_bc: Index = m.twin[lnext(e)]
+    w_ca: Index = m.twin[lprev(e)]
+    left: Index = _make(m, b, c, q, nb)
+    right: Index = _make(m, c, a, q, nb)
+    _set_corner(m, e, q, nb)
+    bond(m, 3 * left + 2, w_bc)
+    bond(m, 3 * right + 2, w_ca)
+    bond(m, lnext(e), 3 * left + 1)
+    bond(m, lprev(e), 3 * right)
+    bond(m, 3 * left, 3 * right + 1)
+    _take_box_edge(m, 3 * left + 2, st)
+    _take_box_edge(m, 3 * right + 2, st)
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _split_edge(m: Mesh, e: Index, q: Index, nb: Index, st: cython.longlong[::1]) -> cython.void:
+    """Point q on the edge of handle e = (a, b, c), whose other side is
+    f = (b, a, d): e's record becomes (q, b, c), f's (b, q, d), and new
+    records take (a, d, q) and (c, a, q) in our corner order."""
+    f: Index = m.twin[e]
+    a: Index = _org(m, e)
+    b: Index = _dest(m, e)
+    c: Index = m.corner[e]
+    d: Index = m.corner[f]
+    w_ca: Index = m.twin[lprev(e)]
+    w_ad: Index = m.twin[lnext(f)]
+    top: Index = _make(m, a, d, q, nb)
+    bottom: Index = _make(m, c, a, q, nb)
+    _set_corner(m, lnext(e), q, nb)
+    _set_corner(m, lprev(f), q, nb)
+    bond(m, 3 * top + 2, w_ad)
+    bond(m, 3 * bottom + 2, w_ca)
+    bond(m, lprev(e), 3 * bottom + 1)
+    bond(m, 3 * bottom, 3 * top + 1)
+    bond(m, 3 * top, lnext(f))
+    _take_box_edge(m, 3 * bottom + 2, st)  # (Triangle's order: c-a first, a-d last)
+    _take_box_edge(m, 3 * top + 2, st)
+
+
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _set_corner(m: Mesh, i: Index, v: Index, nb: Index) -> cython.void:
+    """Corner i (3t + k) of record t becomes v."""
+    t: Index = i // 3
+    k: Index = i - 3 * t
+    c0: Index = v if k == 0 else m.corner[3 * t]
+    c1: Index = v if k == 1 else m.corner[3 * t + 1]
+    c2: Index = v if k == 2 else m.corner[3 * t + 2]
+    _rewrite(m, t, c0, c1, c2, nb)
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _should_flip(m: Mesh, e: Index, nb: Index) -> cython.bint:
+    """Is edge e = (x, y) with apex q (the new point) to be flipped towards
+    the far vertex d?  Seen from q, y is left and x right; a box corner is
+    infinitely far away, so a circle through it is a half-plane: left a
+    corner, flip if d is left of q -> x; right a corner, if d is left of
+    y -> q; d a corner, never.  Otherwise the strict incircle test, with
+    Triangle's order of arguments (y, q, x, d)."""
+    f: Index = m.twin[e]
+    if f == NO_EDGE:
+        return False
+    xy = m.xy
+    x: Index = _org(m, e)
+    y: Index = _dest(m, e)
+    q: Index = m.corner[e]
+    d: Index = m.corner[f]
+    if y >= nb:
+        m.work[C_ORIENT] += 1
+        return orient2d(xy[q, 0], xy[q, 1], xy[x, 0], xy[x, 1], xy[d, 0], xy[d, 1]) > 0.0
+    if x >= nb:
+        m.work[C_ORIENT] += 1
+        return orient2d(xy[d, 0], xy[d, 1], xy[y, 0], xy[y, 1], xy[q, 0], xy[q, 1]) > 0.0
+    if d >= nb:
+        return False
+    m.work[C_INCIRCLE] += 1
+    return incircle(xy[y, 0], xy[y, 1], xy[q, 0], xy[q, 1], xy[x, 0], xy[x, 1], xy[d, 0], xy[d, 1]) > 0.0
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _flip(m: Mesh, e: Index, nb: Index, st: cython.longlong[::1]) -> cython.void:
+    """Flip edge e = (x, y, apex q) with its twin f = (y, x, apex d): each
+    handle (o, t, apex) becomes (far, apex, o), so e's record holds
+    (x, d, q) and f's (d, y, q); both keep their handle numbers."""
+    f: Index = m.twin[e]
+    x: Index = _org(m, e)
+    y: Index = _dest(m, e)
+    q: Index = m.corner[e]
+    d: Index = m.corner[f]
+    w_yq: Index = m.twin[lnext(e)]
+    w_qx: Index = m.twin[lprev(e)]
+    w_xd: Index = m.twin[lnext(f)]
+    w_dy: Index = m.twin[lprev(f)]
+    _set_handle(m, e, d, q, x, nb)
+    _set_handle(m, f, q, d, y, nb)
+    bond(m, lnext(e), w_qx)
+    bond(m, lprev(e), w_xd)
+    bond(m, lnext(f), w_dy)
+    bond(m, lprev(f), w_yq)
+    _take_box_edge(m, lprev(e), st)
+    _take_box_edge(m, lnext(f), st)
+    m.work[C_FLIP] += 1
+
+
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _set_handle(m: Mesh, e: Index, o: Index, d: Index, a: Index, nb: Index) -> cython.void:
+    """Handle e's record gets org o, dest d, apex a."""
+    t: Index = e // 3
+    k: Index = e - 3 * t
+    if k == 0:
+        _rewrite(m, t, a, o, d, nb)
+    elif k == 1:
+        _rewrite(m, t, d, a, o, nb)
+    else:
+        _rewrite(m, t, o, d, a, nb)
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _legalize(m: Mesh, e: Index, stop: Index, nb: Index, st: cython.longlong[::1]) -> cython.void:
+    """Test the edges facing the new point counter-clockwise around it from
+    handle e (whose apex it is) until the edge ending at ``stop`` is
+    accepted; a flipped edge x-y is followed by x-d.  The last handle,
+    turned to start at the new point, is the next location's recent one."""
+    while True:
+        if _should_flip(m, e, nb):
+            _flip(m, e, nb, st)
+            e = lprev(e)
+            continue
+        if _dest(m, e) == stop:
+            break
+        e = lnext(m.twin[lnext(e)])
+    st[ST_RECENT] = lprev(e)
+
+
+# ------------------------------------------------------------ the box
+
+
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _free_box_record(m: Mesh, t: Index, nb: Index, hull: cython.longlong[::1]) -> cython.void:
+    """Free a record that touches the box; across its edge between two
+    points (if any) a triangle of points is left with a hull edge (none if
+    the points are collinear).  ``hull[0]`` counts them, ``hull[1]`` keeps
+    the first."""
+    e: Index
+    w: Index
+    u: Index
+    k: Index
+    for k in range(3):
+        e = 3 * t + k
+        if _org(m, e) < nb and _dest(m, e) < nb:
+            w = m.twin[e]
+            if w == NO_EDGE:
+                continue
+            u = 3 * (w // 3)
+            if m.corner[u] < nb and m.corner[u + 1] < nb and m.corner[u + 2] < nb:
+                m.twin[w] = NO_EDGE
+                if hull[0] == 0:
+                    hull[1] = w
+                hull[0] += 1
+    kill_triangle(m, t)
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _remove_box(m: Mesh, nb: Index, st: cython.longlong[::1], hull: cython.longlong[::1]) -> cython.void:
+    """Free every record touching the box: walk around the box corners from
+    the outer-space handle's record, crossing from each record to the next
+    through the edge leaving the current corner (turning to the next corner
+    at a box edge), freeing each one met and the first one last."""
+    h0: Index = st[ST_DUMMY]
+    h: Index = h0
+    e: Index
+    s: Index
+    while True:
+        e = lprev(h) if m.corner[h] >= nb else lnext(h)
+        s = m.twin[e]
+        if s == NO_EDGE or s // 3 == h0 // 3:
+            break
+        _free_box_record(m, s // 3, nb, hull)
+        h = s
+    _free_box_record(m, h0 // 3, nb, hull)
+
+
+# ------------------------------------------------------------ building
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _insert_all(m: Mesh, n: Index, st: cython.longlong[::1], dup: cython.longlong[::1]) -> cython.void:
+    """Insert points 0 .. n-1 in order; a point equal to an inserted vertex
+    is recorded in ``dup`` and left out."""
+    status: cython.int
+    e: Index
+    q: Index
+    px: cython.double
+    py: cython.double
+    for q in range(n):
+        px = m.xy[q, 0]
+        py = m.xy[q, 1]
+        status, e = _locate(m, px, py, st)
+        if status == ON_VERTEX:
+            m.work[C_DUPLICATE] += 1
+            dup[q] = _org(m, e)
+        elif status == ON_EDGE:
+            _split_edge(m, e, q, n, st)  # e is (q, b, c) now: the flips start at b-c
+            _legalize(m, lnext(e), _dest(m, e), n, st)
+        else:
+            _split_triangle(m, e, q, n, st)
+            _legalize(m, e, _org(m, e), n, st)
+
+
+def box_corners(xy) -> np.ndarray:
+    """Triangle's bounding triangle for the points ``xy`` (rows B1, B2, B3)."""
+    xmin = float(xy[:, 0].min())
+    xmax = float(xy[:, 0].max())
+    ymin = float(xy[:, 1].min())
+    ymax = float(xy[:, 1].max())
+    w = max(xmax - xmin, ymax - ymin)
+    if w == 0.0:
+        w = 1.0
+    return np.array([
+        [xmin - 50.0 * w, ymin - 40.0 * w],
+        [xmax + 50.0 * w, ymin - 40.0 * w],
+        [0.5 * (xmin + xmax), ymax + 60.0 * w],
+    ])  # fmt: skip
+
+
+def triangulate(m: Mesh, box) -> tuple[np.ndarray, int]:
+    """Triangulate the first ``m.nvert`` vertices of ``m`` (whose rows must
+    leave room for three more: the bounding triangle's corners ``box``), in
+    input order.
+
+    Returns ``(dup, start)``: per vertex -1 or the inserted vertex it
+    duplicates, and the origin of the first hull edge the removal of the
+    box met, Triangle's outer-space handle afterwards (-1: no hull, every
+    point collinear, no triangle).  The box records are freed in
+    Triangle's order; ``m.nvert`` is unchanged."""
+    n: Index = m.nvert
+    xy = np.asarray(m.xy)
+    xy[n : n + 3] = box
+    t: Index = new_triangle(m, n, n + 1, n + 2)  # Triangle's (B3, B1, B2): ours in output order
+    st_a = np.zeros(5, dtype=np.int64)
+    st: cython.longlong[::1] = st_a
+    st[ST_SEED] = 1
+    st[ST_SAMPLES] = 1
+    st[ST_RECENT] = -1
+    st[ST_DUMMY] = 3 * t + 2  # handle 0: B1 -> B2
+    st[ST_FIRST_BLOCK] = max(BLOCK, 2 * n - 2)
     dup = np.full(n, -1, dtype=np.int64)
     d: cython.longlong[::1] = dup
+    hull_a = np.array([0, NO_EDGE], dtype=np.int64)
+    hull: cython.longlong[::1] = hull_a
     with cython.nogil:
-        _insert_all(m, n, jb, jc, t, stack, d)
-    return dup
+        _insert_all(m, n, st, d)
+        _remove_box(m, n, st, hull)
+    xy[n : n + 3] = 0.0
+    return dup, (int(m.corner[lnext(hull_a[1])]) if hull_a[0] > 0 else -1)

@@ -159,7 +159,9 @@ def key_unit(xy: np.ndarray) -> float:
     scale in range); 4-point-set polygons at 1e-201 under q34 ran to the
     vertex limit where the same input times 2^667 gives 188.  Measured in
     these units, a mesh is one mesh times the scale (a power of two), and in
-    range nothing changes."""
+    range nothing changes.  Edges whose squares in these units are still
+    below the doubles' range (a mesh graded from 1e-301 to 1e300) go on past
+    Triangle's finest bucket (criteria._triangle_key, order.wide_bucket)."""
     if len(xy) == 0:
         return 1.0
     # halves first: the extent itself can be beyond the doubles

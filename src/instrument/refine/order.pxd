@@ -1,4 +1,5 @@
 # The strategies' priority keys (order.py).
+from libc.math cimport frexp, ldexp
 from libc.string cimport memcpy
 
 cpdef enum:       # strategy ids (instrument.strategies() names them)
@@ -42,6 +43,47 @@ cpdef inline int triangle_bucket(double key) noexcept nogil:
     if x > 2047:
         x = 2047
     return 2047 - x if big else 2048 + x
+
+
+# Triangle's buckets and the wider ones the queue has for squared edges
+# beyond the doubles (queues.py, state.NBUCKETS)
+cdef enum:
+    TOP_BUCKET = 4095        # Triangle's last (finest) bucket
+    WIDE_BUCKETS = 10496     # 2048 + 2 * 4200 + spare: every squared edge between doubles, in any units
+
+
+cpdef inline int wide_bucket(double dx, double dy, int unit_exp) noexcept nogil:
+    # the bucket of the squared length of (dx, dy) * 2^unit_exp, computed
+    # without squaring out of range: Triangle's formula (triangle_bucket) with
+    # x going on past 2047, for squares too small for a double (the vector is
+    # brought to [0.5, 1) by a power of two, squared, and the exponents added
+    # back); where triangle_bucket does not saturate it gives the same bucket,
+    # as 1 / (key 2^2k) is (1 / key) 2^-2k exactly.  Only keys below 1 come
+    # here (edges no longer than the extent, measured in units of about it).
+    cdef double big = dx if dx >= 0.0 else -dx
+    cdef double ay = dy if dy >= 0.0 else -dy
+    if ay > big:
+        big = ay
+    if not (big > 0.0 and big <= 1.7976931348623157e308):  # a zero, infinite or NaN edge
+        return TOP_BUCKET
+    cdef int eb
+    frexp(big, &eb)
+    cdef double sx = ldexp(dx, -eb)
+    cdef double sy = ldexp(dy, -eb)
+    cdef double length = 1.0 / (sx * sx + sy * sy)  # in (0.5, 4]
+    cdef int e
+    cdef double mant = frexp(length, &e)
+    cdef double f = 2.0 * mant
+    e = e - 1 - 2 * (eb + unit_exp)  # L = 1 / key = 2^e f
+    if f == 1.0 and e > 0:  # exact power of two: f = 2, one exponent lower
+        f = 2.0
+        e -= 1
+    cdef int x = 2 * e + (1 if f > 1.4142135623730951 else 0)
+    if x < 0:  # a key of 1 or more (not reached: see above)
+        return 2047
+    if x > WIDE_BUCKETS - 2049:
+        x = WIDE_BUCKETS - 2049
+    return 2048 + x
 
 
 cpdef inline double priority(int strategy, double min_edge2, double cos2_min_angle, double circumradius2,

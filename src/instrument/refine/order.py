@@ -8,7 +8,9 @@ entry), computed by ``priority`` when the triangle is queued, so the hot
 loop never calls back into Python.  A binary heap serves them, except
 Triangle's order, whose key is its bucket number negated: that one is
 served from 4096 FIFO lists, as Triangle does (queues.py), in the same
-order and in constant time.
+order and in constant time; and from more lists past Triangle's finest one
+for squared edges beyond the doubles' range (``wide_bucket``), which
+Triangle's formula would put all into its last list.
 """
 
 from __future__ import annotations
@@ -75,6 +77,30 @@ if not cython.compiled:
         if x > 2047:
             x = 2047
         return 2047 - x if big else 2048 + x
+
+    TOP_BUCKET = 4095
+    WIDE_BUCKETS = 10496
+
+    def wide_bucket(dx: float, dy: float, unit_exp: int) -> int:
+        """The bucket of the squared length of ``(dx, dy) * 2^unit_exp`` where
+        that square leaves the doubles: ``triangle_bucket``'s formula with
+        ``x`` going on past 2047 (order.pxd says how)."""
+        big = max(abs(dx), abs(dy))
+        if not (big > 0.0 and big <= _DBL_MAX):
+            return TOP_BUCKET
+        eb = math.frexp(big)[1]
+        sx = math.ldexp(dx, -eb)
+        sy = math.ldexp(dy, -eb)
+        mant, e = math.frexp(1.0 / (sx * sx + sy * sy))
+        f = 2.0 * mant
+        e = e - 1 - 2 * (eb + unit_exp)
+        if f == 1.0 and e > 0:
+            f = 2.0
+            e -= 1
+        x = 2 * e + (1 if f > math.sqrt(2.0) else 0)
+        if x < 0:
+            return 2047
+        return 2048 + min(x, WIDE_BUCKETS - 2049)
 
     def priority(strategy: int, min_edge2: float, cos2_min_angle: float, circumradius2: float,
                  created_estimate: int, seq: int, rnd: float) -> float:

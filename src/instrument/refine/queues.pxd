@@ -4,6 +4,7 @@ from instrument.refine.order cimport TRIANGLE
 from instrument.refine.state cimport Refiner
 
 cpdef void queue_clear(Refiner r) noexcept nogil
+cpdef void bucket_make_ready(Refiner r, Index b) noexcept nogil
 cpdef Index queue_pop(Refiner r) noexcept nogil
 cpdef void queue_compact(Refiner r, Mesh m) noexcept nogil
 cpdef void queue_push_ghost(Refiner r, double key, Index org, Index dest, Index v, Index rec, Index k) noexcept nogil

@@ -3,8 +3,9 @@
 
 The bad triangles wait in a binary heap ordered by (key, insertion number),
 except under strategy "triangle", whose keys are Triangle's 4096 bucket
-numbers: there, as in Triangle, a FIFO list per bucket queues and serves in
-constant time.  Both orders are the same; the buckets are just faster.
+numbers (and more past its finest, order.wide_bucket): there, as in
+Triangle, a FIFO list per bucket queues and serves in constant time.  Both
+orders are the same; the buckets are just faster.
 
 The bucket lists live in an append-only log (entries linked through
 ``hseq``; -1 ends a list, POPPED marks an entry served): a push writes the
@@ -46,9 +47,22 @@ def queue_clear(r: Refiner) -> cython.void:
     r.top_bucket = -1
     r.log_length = 0
     r.nghost = 0
-    for k in range(r.bucket.shape[1]):
+    for k in range(r.bucket_ready):
         r.bucket[0, k] = -1
         r.bucket[1, k] = -1
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def bucket_make_ready(r: Refiner, b: Index) -> cython.void:
+    """Set up the empty buckets up to ``b`` (past Triangle's 4096, only a
+    mesh graded beyond the doubles' squares needs them: order.wide_bucket)."""
+    for k in range(r.bucket_ready, b + 1):
+        r.bucket[0, k] = -1
+        r.bucket[1, k] = -1
+    if b >= r.bucket_ready:
+        r.bucket_ready = b + 1
 
 
 @cython.cfunc
@@ -106,7 +120,7 @@ def queue_compact(r: Refiner, m: Mesh) -> cython.void:
     (``smallest`` on I(n)) keeps quadratically many dead entries."""
     n: Index = 0
     if _bucketed(r):
-        for k in range(r.bucket.shape[1]):
+        for k in range(r.bucket_ready):
             r.bucket[0, k] = -1
             r.bucket[1, k] = -1
         r.top_bucket = -1

@@ -28,7 +28,7 @@ from cython.cimports.instrument.core.locate import LOC_BLOCKED, LOC_FAILED, LOC_
 from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, V_FREE, V_SEGMENT, Index, Mesh, is_ghost, kill_triangle, lnext, lprev
 from cython.cimports.instrument.core.navigate import edge_around, find_edge, remember_corners, vertex_edge
 from cython.cimports.instrument.core.predicates import incircle, orient2d
-from cython.cimports.instrument.core.scaling import unit_scale
+from cython.cimports.instrument.core.scaling import scaled_dot, unit_scale
 from cython.cimports.instrument.core.status import DONE, FAILED, NEED_ROOM, PAUSE, PRECISION
 from cython.cimports.instrument.core.subsegments import Subsegments, new_record
 from cython.cimports.instrument.counters import (
@@ -66,7 +66,7 @@ from cython.cimports.instrument.refine.inplace import split_in_place, splits_cle
 from cython.cimports.instrument.refine.order import TRIANGLE
 from cython.cimports.instrument.refine.queues import ghost_room, ghost_slot, ghosts_orphaned, queue_clear, queue_compact, queue_pop, queue_push, queue_used
 from cython.cimports.instrument.refine.state import T_CIRCUMCENTER, T_OFFCENTER, T_REJECTED, T_SEGMENT, Refiner, step_begins, step_undone, trace_full, trace_row
-from cython.cimports.libc.math import fabs, hypot, sqrt
+from cython.cimports.libc.math import fabs, hypot, nextafter, sqrt
 
 #: bad triangles taken between two PAUSEs
 PAUSE_EVERY = cython.declare(Index, 1 << 14)
@@ -293,8 +293,8 @@ def _split_at_apex(r: Refiner, m: Mesh, segs: Subsegments, e: Index, f: Index, t
         # the flip o d -> c y leaves c's new edges to test: a vertex beside
         # them may lie inside their triangles' circles (c was only within
         # rounding of o d), and a mesh left so is not Delaunay
-        u = m.corner[lnext(h0)]  # h0 = c -> u
-        w = m.corner[lnext(h1)]  # h1 = w -> c
+        u = m.corner[lprev(h0)]  # h0 = c -> u (its destination)
+        w = m.corner[lnext(h1)]  # h1 = w -> c (its origin)
         flips = m.work[C_FLIP]
         made = legalize_fan(r, m, made)
         flips = m.work[C_FLIP] - flips
@@ -310,6 +310,71 @@ def _split_at_apex(r: Refiner, m: Mesh, segs: Subsegments, e: Index, f: Index, t
     check_subsegment(r, m, h1)
     trace_row(r, T_SEGMENT, made0 + 2 * flips, 1 + made0 + 2 * flips, 0, r.hsize)
     return DONE
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _across_line(m: Mesh, o: Index, d: Index, px: cython.double, py: cython.double) -> tuple[cython.bint, cython.double, cython.double]:
+    """The neighbour of the point (px, py), a double away on either axis or
+    both, that lies on the line o d or nearest to it on its other side:
+    ``(True, x, y)``, or ``(False, px, py)`` if the point is on the line or
+    none of its neighbours is across.  Exact tests Triangle does not make:
+    not counted."""
+    side: cython.double = orient2d(m.xy[o, 0], m.xy[o, 1], m.xy[d, 0], m.xy[d, 1], px, py)
+    if side == 0.0:
+        return False, px, py
+    best: cython.double = -1.0
+    bx: cython.double = px
+    by: cython.double = py
+    qx: cython.double
+    qy: cython.double
+    q: cython.double
+    for i in range(3):  # (px, px - ulp, px + ulp) against the same in y
+        qx = px if i == 0 else nextafter(px, -2.0e308 if i == 1 else 2.0e308)
+        for j in range(3):
+            qy = py if j == 0 else nextafter(py, -2.0e308 if j == 1 else 2.0e308)
+            if (i == 0 and j == 0) or not (fabs(qx) <= 1.7976931348623157e308 and fabs(qy) <= 1.7976931348623157e308):
+                continue
+            q = orient2d(m.xy[o, 0], m.xy[o, 1], m.xy[d, 0], m.xy[d, 1], qx, qy)
+            if (q <= 0.0 if side > 0.0 else q >= 0.0) and (best < 0.0 or fabs(q) < best):
+                best = fabs(q)
+                bx = qx
+                by = qy
+    return best >= 0.0, bx, by
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _bent_away(m: Mesh, e: Index, px: cython.double, py: cython.double) -> Index:
+    """The side of interior subsegment edge ``e`` (``e`` or its twin) that
+    the split point (px, py) has been rounded away from and lies outside the
+    circumcircle of, or -1 (almost always: the point lies exactly on the
+    line o d, inside both sides' circles).
+
+    A split point rounded off the line toward one apex while the other apex
+    lies near the line too (a chain of nearly collinear points) can fall
+    outside the far triangle's circle.  Taking that triangle into the cavity
+    anyway (as a point on the edge would) makes the spoke to its apex not
+    locally Delaunay; the constrained Delaunay mesh keeps o d as an edge,
+    with the thin triangle (o, d, p) beside it (Triangle's own -p of the
+    vertices and pieces made so, tests/engine/test_split_bent.py).  A point
+    on the circle keeps the old cavity (both meshes are Delaunay).  Exact
+    tests Triangle does not make: not counted."""
+    tw: Index = m.twin[e]
+    o: Index = m.corner[lnext(e)]
+    d: Index = m.corner[lprev(e)]
+    side: cython.double = orient2d(m.xy[o, 0], m.xy[o, 1], m.xy[d, 0], m.xy[d, 1], px, py)
+    if side == 0.0:
+        return -1
+    far: Index = tw if side > 0.0 else e  # e's apex is left of o -> d
+    a: Index = m.corner[far]
+    b: Index = m.corner[lnext(far)]
+    c: Index = m.corner[lprev(far)]
+    if incircle(m.xy[a, 0], m.xy[a, 1], m.xy[b, 0], m.xy[b, 1], m.xy[c, 0], m.xy[c, 1], px, py) < 0.0:
+        return far
+    return -1
 
 
 @cython.ccall
@@ -409,10 +474,9 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
         status = _split_at_apex(r, m, segs, e, tw, triangles)
         if status != FAILED:
             return status
-    t1: Index = tw // 3 if tw != NO_EDGE else -1
-    n: Index
-    nb: Index
-    n, nb = collect_cavity(r, m, px, py, e // 3, t1, e)
+    # The cavity takes both sides of e, as a point on it would, unless the
+    # point was rounded off the line and outside the far side's circle: then
+    # that side stays, and e with it, no longer a subsegment (_bent_away).
     # The split point, rounded, may land on or beyond the line of a rim edge:
     # a hull segment's pieces shrink towards its end C (to ~1e-17 beside
     # coordinates ~1e-3), encroached by an input vertex D 4e-193 from C, and
@@ -420,31 +484,59 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
     # inverted triangle (Triangle outputs it). That rim edge joins an end to
     # the apex D, which then lies on the subsegment within the rounding the
     # split points themselves have: split at D instead (the encroachment
-    # ends), or, for any other rim edge, run out of precision.
+    # ends).  Otherwise the point may have been rounded off the line into a
+    # sliver beside e and out of it (a thin triangle that _bent_away kept,
+    # whose far edge became a subsegment of the hull): the next double
+    # across the line is tried once (_across_line), and failing that the
+    # split runs out of precision.
     apex_e: Index = m.corner[e]
     apex_t: Index = m.corner[tw] if tw != NO_EDGE else -1
     u: Index
     w: Index
-    for j in range(nb):
-        u = r.bnd[j, 1]
-        w = r.bnd[j, 2]
-        if orient2d(px, py, m.xy[u, 0], m.xy[u, 1], m.xy[w, 0], m.xy[w, 1]) <= 0.0:
-            forget_cavity(r, m, n)
-            status = FAILED
-            if u == apex_e or w == apex_e:
-                status = _split_at_apex(r, m, segs, e, e, triangles)
-            elif apex_t >= 0 and (u == apex_t or w == apex_t):
-                status = _split_at_apex(r, m, segs, e, tw, triangles)
-            if status != FAILED:
-                return status
-            r.error_org = o
-            r.error_dest = d
-            return PRECISION
+    far: Index = -1
+    n: Index = 0
+    nb: Index = 0
+    folded: cython.bint = False
+    moved: cython.bint
+    for attempt in range(2):
+        far = _bent_away(m, e, px, py) if tw != NO_EDGE else -1
+        if far >= 0:
+            n, nb = collect_cavity(r, m, px, py, m.twin[far] // 3, -1, -1)
+        else:
+            n, nb = collect_cavity(r, m, px, py, e // 3, tw // 3 if tw != NO_EDGE else -1, e)
+        folded = False
+        for j in range(nb):
+            u = r.bnd[j, 1]
+            w = r.bnd[j, 2]
+            if orient2d(px, py, m.xy[u, 0], m.xy[u, 1], m.xy[w, 0], m.xy[w, 1]) <= 0.0:
+                folded = True
+                break
+        if not folded:
+            break
+        forget_cavity(r, m, n)
+        if attempt > 0:
+            break
+        status = FAILED
+        if u == apex_e or w == apex_e:
+            status = _split_at_apex(r, m, segs, e, e, triangles)
+        elif apex_t >= 0 and (u == apex_t or w == apex_t):
+            status = _split_at_apex(r, m, segs, e, tw, triangles)
+        if status != FAILED:
+            return status
+        moved, px, py = _across_line(m, o, d, px, py)
+        if not moved:
+            break
+    if folded:
+        r.error_org = o
+        r.error_dest = d
+        return PRECISION
     if not has_room(r, m, nb) or segs.count >= segs.marker.shape[0]:
         forget_cavity(r, m, n)
         step_undone(r, m.work)
         return NEED_ROOM
-    if not triangles and splits_cleanly(m, e, px, py):  # before the first list: in Triangle's records
+    # before the first list, an ordinary split (both sides in the cavity) is
+    # made in Triangle's records (inplace.py)
+    if not triangles and far < 0 and splits_cleanly(m, e, px, py):
         forget_cavity(r, m, n)
         split_in_place(r, m, segs, e, px, py, e0, e1, split)
         return DONE
@@ -461,6 +553,9 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
     ea: Index = -1
     for j in range(nb):  # the halves: spokes to o and d (edge 2 of (v, o|d, x), edge 1 of (v, x, o|d))
         t = r.fan[j]
+        if far >= 0 and m.seg[3 * t] == rec and (m.corner[3 * t + 1] == o or m.corner[3 * t + 1] == d) and (
+                m.corner[3 * t + 2] == o or m.corner[3 * t + 2] == d):
+            mark_both(m, 3 * t, NO_SEG)  # the thin triangle's o d: an edge now, its pieces the subsegments
         for k in range(1, 3):
             w = m.corner[3 * t + k]
             if w == o or w == d:
@@ -896,6 +991,8 @@ def first_side(m: Mesh, segs: Subsegments, first: cython.longlong[::1]) -> cytho
         dest = m.corner[3 * t + (k + 2) % 3]
         a = segs.ends[rec, 0]
         b = segs.ends[rec, 1]
-        along = (m.xy[dest, 0] - m.xy[org, 0]) * (m.xy[b, 0] - m.xy[a, 0]) + (m.xy[dest, 1] - m.xy[org, 1]) * (m.xy[b, 1] - m.xy[a, 1]) > 0.0
+        # (scaled: at 2^-540 the products vanished, no side was along, and no
+        # interior subsegment was ever tested for encroachment)
+        along = scaled_dot(m.xy[dest, 0] - m.xy[org, 0], m.xy[dest, 1] - m.xy[org, 1], m.xy[b, 0] - m.xy[a, 0], m.xy[b, 1] - m.xy[a, 1]) > 0.0
         if along or m.twin[e] == NO_EDGE:
             first[rec] = e

@@ -43,7 +43,8 @@ cdef class Refiner:
     cdef public long long[::1] hseq  # insertion number (ties); in the bucket log: the next entry
     cdef public int[::1] htri        # triangle slot (int32, as the mesh's links: a smaller queue)
     cdef public int[::1] hstamp      # and its stamp when queued (int32, as Mesh.stamp)
-    cdef public long long[:, ::1] bucket  # (2, 4096) each bucket's first and last log entry, -1 empty
+    cdef public long long[:, ::1] bucket  # (2, NBUCKETS) each bucket's first and last log entry, -1 empty
+    cdef public Index bucket_ready   # buckets from here on are not set yet (queues.bucket_make_ready)
     cdef public Index hsize          # entries queued
     cdef public long long seq        # insertions so far
     cdef public Index top_bucket     # the highest non-empty bucket, -1 none

@@ -33,7 +33,7 @@ from __future__ import annotations
 from fractions import Fraction
 
 import cython
-from cython.cimports.instrument.core.scaling import unit_scale
+from cython.cimports.instrument.core.scaling import crossing_terms, unit_scale
 from cython.cimports.libc.math import fabs, nextafter
 
 # The filter's slack over its first-order error terms (covers the
@@ -168,32 +168,9 @@ def scouted_crossing(
     vanish; t (a ratio) is then what the unscaled formula gives wherever
     that does not overflow or underflow, and the result stays the scaled
     copy of the result at another scale."""
-    ex: cython.double = e2x - e1x
-    ey: cython.double = e2y - e1y
-    tx: cython.double = lx - rx
-    ty: cython.double = ly - ry
-    wx: cython.double = rx - e2x
-    wy: cython.double = ry - e2y
-    mx: cython.double = max(max(max(fabs(ex), fabs(ey)), max(fabs(tx), fabs(ty))), max(fabs(wx), fabs(wy)))
-    f: cython.double
-    if not (mx <= 2.0**240 and mx >= 2.0**-240):
-        if not mx <= 1.7976931348623157e308:  # a difference overflowed: quarter first
-            ex = 0.25 * e2x - 0.25 * e1x
-            ey = 0.25 * e2y - 0.25 * e1y
-            tx = 0.25 * lx - 0.25 * rx
-            ty = 0.25 * ly - 0.25 * ry
-            wx = 0.25 * rx - 0.25 * e2x
-            wy = 0.25 * ry - 0.25 * e2y
-            mx = max(max(max(fabs(ex), fabs(ey)), max(fabs(tx), fabs(ty))), max(fabs(wx), fabs(wy)))
-        f = unit_scale(mx)
-        ex *= f
-        ey *= f
-        tx *= f
-        ty *= f
-        wx *= f
-        wy *= f
-    den: cython.double = ty * ex - tx * ey
-    num: cython.double = ey * wx - ex * wy
+    num: cython.double
+    den: cython.double
+    num, den = crossing_terms(e1x, e1y, e2x, e2y, rx, ry, lx, ly, e2x, e2y)
     if not (den != 0.0):
         return -1.0, 0.0, 0.0
     t: cython.double = num / den

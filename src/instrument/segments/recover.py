@@ -44,7 +44,7 @@ from cython.cimports.instrument.core.locate import LOC_INSIDE, LOC_ON_EDGE, LOC_
 from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, Index, Mesh, lnext, lprev, set_parent, spare_triangles
 from cython.cimports.instrument.core.navigate import find_edge, remember_corners, vertex_edge
 from cython.cimports.instrument.core.predicates import dot_sign, incircle, orient2d
-from cython.cimports.instrument.core.scaling import unit_scale
+from cython.cimports.instrument.core.scaling import crossing_terms, unit_scale
 from cython.cimports.instrument.core.status import DONE, FAILED, NEED_BUFFER, NEED_ROOM
 from cython.cimports.instrument.core.subsegments import Subsegments, new_record
 from cython.cimports.instrument.segments.crossing import crossing_point, scouted_crossing
@@ -769,34 +769,12 @@ def crossing_parameter(
     2^-537 leave nothing above the subnormal range (0 / 0, or all bits
     lost).  Where the differences are out of the safe range they are scaled
     by an exact power of two first, which leaves the ratio unchanged."""
-    ex: cython.double = bx - ax
-    ey: cython.double = by - ay
-    tx: cython.double = lx - rx
-    ty: cython.double = ly - ry
-    wx: cython.double = rx - ax
-    wy: cython.double = ry - ay
-    mx: cython.double = max(max(max(fabs(ex), fabs(ey)), max(fabs(tx), fabs(ty))), max(fabs(wx), fabs(wy)))
-    f: cython.double
-    if not (mx <= 2.0**240 and mx >= 2.0**-240):
-        if not mx <= 1.7976931348623157e308:  # a difference overflowed: halve first
-            ex = 0.25 * bx - 0.25 * ax
-            ey = 0.25 * by - 0.25 * ay
-            tx = 0.25 * lx - 0.25 * rx
-            ty = 0.25 * ly - 0.25 * ry
-            wx = 0.25 * rx - 0.25 * ax
-            wy = 0.25 * ry - 0.25 * ay
-            mx = max(max(max(fabs(ex), fabs(ey)), max(fabs(tx), fabs(ty))), max(fabs(wx), fabs(wy)))
-        f = unit_scale(mx)
-        ex *= f
-        ey *= f
-        tx *= f
-        ty *= f
-        wx *= f
-        wy *= f
-    den: cython.double = ty * ex - tx * ey
+    num: cython.double
+    den: cython.double
+    num, den = crossing_terms(ax, ay, bx, by, rx, ry, lx, ly, ax, ay)
     t: cython.double = 0.5
     if den != 0.0:
-        t = (ey * wx - ex * wy) / den
+        t = num / den
         t = min(max(t, 0.0), 1.0)
     return t
 
@@ -1222,43 +1200,22 @@ def insert_segments(m: Mesh, segs: Subsegments, work: Recovery) -> cython.int:
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
-def mark_hull(m: Mesh, segs: Subsegments, source: cython.int) -> cython.bint:
+def mark_hull(m: Mesh, segs: Subsegments, source: cython.int, start: Index) -> cython.bint:
     """-c (or refinement of a point set): every boundary edge becomes a
     subsegment with marker 1; one that already is keeps its record but takes
     marker 1 if its own is 0.  Returns False if records ran out (call again
     after growing them: the edges marked keep their records).
 
-    The edges are taken around the hull counter-clockwise from the one
-    Triangle's outer space points at (``Mesh.hull_edge``, else the one
-    leaving its least vertex in (x, y) order: carve/infect.py's
-    start_hull_edge), as Triangle makes their records, so the records come
-    in Triangle's order; a boundary the walk does not reach (there is one
-    hull) is marked in slot order."""
-    xy = m.xy
-    e: Index
+    The edges are taken around the hull counter-clockwise from boundary
+    edge ``start``, the one Triangle's outer-space handle holds
+    (carve/infect.py's start_hull_edge), as Triangle makes their records,
+    so the records come in Triangle's order (the encroached ones are
+    queued in that order); a boundary the walk does not reach (there is
+    one hull) is marked in slot order."""
+    e: Index = start
     f: Index
-    e0: Index = NO_EDGE
-    o: Index
-    b: Index
-    for t in range(m.nslot):
-        if m.stamp[t] <= 0:
-            continue
-        for k in range(3):
-            e = 3 * t + k
-            if m.twin[e] == NO_EDGE:
-                o = m.corner[lnext(e)]
-                if e0 == NO_EDGE:
-                    e0 = e
-                else:
-                    b = m.corner[lnext(e0)]
-                    if xy[o, 0] < xy[b, 0] or (xy[o, 0] == xy[b, 0] and xy[o, 1] < xy[b, 1]):
-                        e0 = e
-    e = m.hull_edge
-    if e >= 0 and m.stamp[e // 3] > 0 and m.twin[e] == NO_EDGE:
-        e0 = e
-    e = e0
     for _ in range(3 * m.nslot):
-        if e == NO_EDGE:
+        if e < 0:
             break
         if segs.count >= segs.marker.shape[0]:
             return False
@@ -1266,7 +1223,7 @@ def mark_hull(m: Mesh, segs: Subsegments, source: cython.int) -> cython.bint:
         f = lnext(e)  # the next hull edge leaves this one's destination
         while m.twin[f] != NO_EDGE:
             f = lnext(m.twin[f])
-        e = f if f != e0 else NO_EDGE
+        e = f if f != start else NO_EDGE
     for t in range(m.nslot):
         if m.stamp[t] <= 0:
             continue
