@@ -68,9 +68,11 @@ def wrap_refine(refine):
 def wrap_split(split):
     def splitting(r, m, segs, h):
         what = ' '.join(g(m, m.corner[x]) for x in (lnext(h), lprev(h), h))
+        at = len(events)
+        events.append(('S', what))  # before the triangles its insertion queues, as Triangle prints it
         status = split(r, m, segs, h)
-        if status != NEED_ROOM:  # a step that ran out of room changed nothing and runs again
-            events.append(('S', what))
+        if status == NEED_ROOM:  # a step that ran out of room changed nothing and runs again
+            del events[at:]
         return status
     return splitting
 

@@ -78,10 +78,15 @@ def start_hull_edge(m: Mesh, vertex: Index) -> Index:
     After divide and conquer (``vertex`` -1) it is the edge leaving the
     hull vertex with the least (x, y), counter-clockwise; after incremental
     insertion the hull edge leaving ``vertex`` (the first one the removal
-    of the bounding triangle met: delaunay/incremental.py).  Only points
+    of the bounding triangle met: delaunay/incremental.py).  An edge flip or
+    split next to the boundary bonds another boundary edge to Triangle's
+    outer space, and the handle holds that one from then on
+    (``Mesh.hull_edge`` follows it through segment recovery).  Only points
     strictly left of its line are located, so a hole point on that edge's
     line is ignored."""
-    e: Index
+    e: Index = m.hull_edge
+    if e >= 0 and m.stamp[e // 3] > 0 and m.twin[e] == NO_EDGE:
+        return e
     if vertex >= 0:
         for t in range(m.nslot):
             if m.stamp[t] <= 0:
@@ -183,8 +188,8 @@ def plague(m: Mesh, segs: Subsegments, queue: cython.longlong[::1], n: Index) ->
     while head < n:
         t = queue[head]
         head += 1
-        for k in range(3):
-            e = 3 * t + k
+        for k in range(3):  # edges 2, 0, 1: Triangle's orientations 0, 1, 2 (the order it infects in)
+            e = 3 * t + (k + 2) % 3
             tw = m.twin[e]
             if tw == NO_EDGE or m.tflag[tw // 3]:
                 continue

@@ -29,6 +29,7 @@ from cython.cimports.instrument.core.mesh import (
     lnext,
     lprev,
     new_triangle,
+    spare_triangles,
 )
 from cython.cimports.instrument.core.predicates import incircle, orient2d
 from cython.cimports.instrument.counters import C_CREATED, C_DELETED, C_FLIP, C_INCIRCLE, C_ORIENT
@@ -192,6 +193,220 @@ def flip(m: Mesh, e: Index) -> Index:
     m.seg[T2 + 1] = s_dx
     m.work[C_FLIP] += 1
     return t1
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def flip_in_place(m: Mesh, e: Index) -> cython.void:
+    """Flip edge ``e`` as Triangle does, in its two slots.
+
+    ``e`` runs ``a -> b`` in triangle ``(a, b, c)`` (apex ``c``); its twin
+    runs ``b -> a`` with apex ``d``.  Afterwards edge ``e`` (the same
+    number) runs ``d -> c`` with apex ``a``, and the twin runs ``c -> d``
+    with apex ``b``: each slot keeps its place in memory and the rotation
+    of the edge it was flipped through, which is where Triangle's flip
+    leaves its two triangle records (measured from its output order, which
+    is its pool order: tests/engine/test_pool_order.py).  ``flip`` instead
+    frees both slots and takes them again in the other order, the two new
+    triangles each with the far vertex first.  Both slots' stamps move on
+    (their triangles changed), the flip counts as ``flip`` counts it, and a
+    side of the quadrilateral on the mesh's boundary becomes
+    ``Mesh.hull_edge`` (where Triangle's outer space points after its flip
+    bonds that side to it).
+    """
+    tw: Index = m.twin[e]
+    e1: Index = lnext(e)
+    e2: Index = lprev(e)
+    t1: Index = lnext(tw)
+    t2: Index = lprev(tw)
+    a: Index = m.corner[e1]
+    b: Index = m.corner[e2]
+    c: Index = m.corner[e]
+    d: Index = m.corner[tw]
+    n_bc: Index = m.twin[e1]  # across b -> c
+    n_ca: Index = m.twin[e2]  # across c -> a
+    n_ad: Index = m.twin[t1]  # across a -> d
+    n_db: Index = m.twin[t2]  # across d -> b
+    has_seg: cython.bint = m.seg.shape[0] > 0
+    s_bc: cython.int = NO_SEG
+    s_ca: cython.int = NO_SEG
+    s_ad: cython.int = NO_SEG
+    s_db: cython.int = NO_SEG
+    if has_seg:
+        s_bc = m.seg[e1]
+        s_ca = m.seg[e2]
+        s_ad = m.seg[t1]
+        s_db = m.seg[t2]
+    m.corner[e] = cython.cast(cython.int, a)
+    m.corner[e1] = cython.cast(cython.int, d)
+    m.corner[e2] = cython.cast(cython.int, c)
+    m.corner[tw] = cython.cast(cython.int, b)
+    m.corner[t1] = cython.cast(cython.int, c)
+    m.corner[t2] = cython.cast(cython.int, d)
+    # (a, d, c): c -> a at e1, a -> d at e2; (b, c, d): d -> b at t1, b -> c at t2
+    bond(m, e1, n_ca)
+    bond(m, e2, n_ad)
+    bond(m, t1, n_db)
+    bond(m, t2, n_bc)
+    if has_seg:
+        m.seg[e1] = s_ca
+        m.seg[e2] = s_ad
+        m.seg[t1] = s_db
+        m.seg[t2] = s_bc
+    # Triangle's outer space points at the last triangle bonded to it
+    if n_ca == NO_EDGE:
+        m.hull_edge = e1
+    if n_ad == NO_EDGE:
+        m.hull_edge = e2
+    if n_db == NO_EDGE:
+        m.hull_edge = t1
+    if n_bc == NO_EDGE:
+        m.hull_edge = t2
+    m.stamp[e // 3] += 1
+    m.stamp[tw // 3] += 1
+    if not is_ghost(m, e // 3):
+        m.work[C_CREATED] += 1
+        m.work[C_DELETED] += 1
+    if not is_ghost(m, tw // 3):
+        m.work[C_CREATED] += 1
+        m.work[C_DELETED] += 1
+    m.work[C_FLIP] += 1
+
+
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _remember(m: Mesh, t: Index) -> cython.void:
+    """Triangle ``t``'s edges as its corners' edge hints (if the mesh keeps them)."""
+    if m.vtri.shape[0] > 0:
+        for k in range(3):
+            m.vtri[m.corner[3 * t + k]] = 3 * t + (k + 2) % 3
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def split_edge_in_place(m: Mesh, h: Index, v: Index, half: cython.int, zero: Index) -> Index:
+    """Split edge ``h`` (and its twin, if any) at vertex ``v`` as Triangle
+    splits a triangle edge, keeping its records where Triangle keeps them.
+
+    ``h`` runs ``r -> l`` in triangle ``(r, l, b)``; its twin ``l -> r`` in
+    ``(l, r, x)``.  ``h``'s slot becomes ``(v, l, b)`` (its edge ``h`` runs
+    ``v -> l``), the twin's slot ``(l, v, x)`` (the twin runs ``l -> v``),
+    and two new triangles are taken, ``(r, x, v)`` first if there is a twin,
+    then ``(b, r, v)``, each made with its edge ``zero`` (the one Triangle's
+    new records start from: 2 before refinement, 0 during it, see
+    refine.run) running from its first corner to its second.  The half
+    ``v - l`` keeps the edge's subsegment record; the half ``r - v`` gets
+    record ``half`` (NO_SEG if the edge is none).  Returns ``lnext(h)``, the
+    edge ``l -> b`` opposite ``v``, where Triangle's flips around ``v``
+    start (``lawson_in_place``); -1 if no triangle could be taken (nothing
+    changed).  A new triangle's side on the mesh's boundary becomes
+    ``Mesh.hull_edge``, as in ``flip_in_place``."""
+    tw: Index = m.twin[h]
+    need: Index = 2 if tw != NO_EDGE else 1
+    if spare_triangles(m) < need:
+        return -1
+    z0: Index = zero
+    z1: Index = (zero + 1) % 3
+    z2: Index = (zero + 2) % 3
+    r: Index = m.corner[lnext(h)]
+    b: Index = m.corner[h]
+    n_br: Index = m.twin[lprev(h)]  # across b -> r
+    has_seg: cython.bint = m.seg.shape[0] > 0
+    s_br: cython.int = m.seg[lprev(h)] if has_seg else NO_SEG
+    x: Index
+    n_rx: Index
+    s_rx: cython.int
+    tt: Index
+    T: Index = -1
+    m.corner[lnext(h)] = cython.cast(cython.int, v)
+    m.stamp[h // 3] += 1
+    m.work[C_DELETED] += 1
+    if tw != NO_EDGE:
+        x = m.corner[tw]
+        n_rx = m.twin[lnext(tw)]
+        s_rx = m.seg[lnext(tw)] if has_seg else NO_SEG
+        m.corner[lprev(tw)] = cython.cast(cython.int, v)
+        m.stamp[tw // 3] += 1
+        m.work[C_DELETED] += 1
+        # (r, x, v): its edge zero r -> x, then x -> v, then v -> r
+        tt = _make(m, r, x, v) if zero == 2 else (_make(m, v, r, x) if zero == 0 else _make(m, x, v, r))
+        T = 3 * tt
+        bond(m, T + z1, lnext(tw))  # x -> v
+        bond(m, T + z0, n_rx)  # r -> x
+        if has_seg:
+            m.seg[lnext(tw)] = NO_SEG
+            m.seg[T + z0] = s_rx
+            m.seg[T + z2] = half
+        m.work[C_CREATED] += 1
+    # (b, r, v): its edge zero b -> r, then r -> v, then v -> b
+    tb: Index = _make(m, b, r, v) if zero == 2 else (_make(m, v, b, r) if zero == 0 else _make(m, r, v, b))
+    B: Index = 3 * tb
+    bond(m, B + z2, lprev(h))  # v -> b
+    bond(m, B + z0, n_br)  # b -> r
+    if tw != NO_EDGE:
+        bond(m, B + z1, T + z2)  # r -> v
+    if has_seg:
+        m.seg[lprev(h)] = NO_SEG
+        m.seg[B + z0] = s_br
+        m.seg[B + z1] = half
+    m.work[C_CREATED] += 1
+    # sides on the boundary, bonded to Triangle's outer space in this order
+    if tw != NO_EDGE and m.twin[T + z0] == NO_EDGE:
+        m.hull_edge = T + z0
+    if n_br == NO_EDGE:
+        m.hull_edge = B + z0
+    if tw == NO_EDGE:
+        m.hull_edge = B + z1
+    return lnext(h)
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def lawson_in_place(m: Mesh, h: Index) -> cython.void:
+    """Triangle's flips around a vertex ``v`` just inserted, from edge ``h``
+    (opposite ``v``, which is its apex), with ``flip_in_place``.
+
+    The edges opposite ``v`` are visited counter-clockwise around it:
+    an edge that is no subsegment, has a triangle beyond and whose far
+    vertex lies inside the circle of its triangle with ``v`` is flipped,
+    and the first of the two edges it exposes is visited next; any other
+    edge is accepted, and the walk moves on to the next triangle around
+    ``v``, until it is back where it started (or at the mesh's boundary).
+    The triangles around ``v`` are left where Triangle's records are, and
+    the corners' edge hints point into them."""
+    xy = m.xy
+    first: Index = m.corner[lnext(h)]
+    v: Index = m.corner[h]
+    e: Index = h
+    tw: Index
+    rr: Index
+    ll: Index
+    f: Index
+    nx: Index
+    flipping: cython.bint
+    while True:
+        tw = m.twin[e]
+        rr = m.corner[lnext(e)]
+        ll = m.corner[lprev(e)]
+        flipping = False
+        if tw != NO_EDGE and (m.seg.shape[0] == 0 or m.seg[e] == NO_SEG):
+            f = m.corner[tw]
+            m.work[C_INCIRCLE] += 1
+            flipping = incircle(xy[ll, 0], xy[ll, 1], xy[v, 0], xy[v, 1], xy[rr, 0], xy[rr, 1], xy[f, 0], xy[f, 1]) > 0.0
+        if flipping:
+            flip_in_place(m, e)  # e: far -> v now, apex rr
+            e = lprev(e)  # rr -> far, apex v
+            continue
+        _remember(m, e // 3)
+        nx = m.twin[lnext(e)]  # across ll -> v
+        if ll == first or nx == NO_EDGE:
+            return
+        e = lnext(nx)
 
 
 @cython.ccall

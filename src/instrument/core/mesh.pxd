@@ -43,6 +43,7 @@ cdef class Mesh:
     cdef public Index nlive           # live triangles (ghosts included)
     cdef public long long[::1] work        # the work counters (counters.py)
     cdef public long long rng              # the walks' random generator state
+    cdef public Index hull_edge            # the boundary edge Triangle's outer space was last bonded to (-1: unknown)
     cdef public Index hull_start      # the vertex whose hull edge Triangle's outer-space handle holds, or -1
 
 
@@ -131,6 +132,7 @@ cdef inline Index next_random(Mesh m) noexcept nogil:
 
 
 cpdef Index remove_ghosts(Mesh m) noexcept nogil
+cpdef Index remove_ghosts_around_hull(Mesh m) noexcept nogil
 cpdef void relabel_corners(Mesh m, long long[::1] label) noexcept nogil
 cpdef void turn_corners(Mesh m, Index shift) noexcept nogil
 cpdef void set_parent(Mesh m, Index v, Index p0, Index p1, Index p2, double s, double t) noexcept nogil

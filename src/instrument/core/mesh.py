@@ -121,6 +121,7 @@ class Mesh:
         self.nlive = 0
         self.work = new_work() if work is None else work
         self.rng = 12345
+        self.hull_edge = -1
         # Triangle's outer-space handle after the first triangulation: the
         # hull edge leaving this vertex (incremental insertion sets it), or
         # -1: the edge leaving the least (x, y) vertex (divide and conquer)
@@ -144,6 +145,7 @@ class Mesh:
         other.nlive = 0
         other.work = new_work()
         other.rng = self.rng
+        other.hull_edge = -1
         other.hull_start = -1
         return other
 
@@ -273,6 +275,59 @@ def remove_ghosts(m: Mesh) -> Index:
                 kill_triangle(m, t)
                 break
     return hull
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def remove_ghosts_around_hull(m: Mesh) -> Index:
+    """``remove_ghosts`` in the order Triangle deletes its ghosts after
+    divide and conquer: around the hull counter-clockwise, from the ghost
+    of the hull edge that leaves the least vertex in (x, y) order.  The
+    order is that of the free stack, so it decides which slots the next
+    triangles made take (the last ghost deleted first): found by comparing
+    Triangle's output order where segment recovery splits edges
+    (tests/engine/test_pool_order.py).  A ghost's finite edge ``h``
+    (opposite its ghost corner) runs against its hull edge, from the hull
+    edge's head to its tail; the next ghost counter-clockwise holds
+    ``lprev(twin[lprev(h)])``.  Returns the hull size."""
+    xy = m.xy
+    start: Index = -1
+    d: Index
+    b: Index
+    h: Index
+    for t in range(m.nslot):
+        if m.stamp[t] <= 0:
+            continue
+        for k in range(3):
+            if m.corner[3 * t + k] == GHOST:
+                h = 3 * t + k
+                d = m.corner[lprev(h)]
+                if start < 0:
+                    start = h
+                else:
+                    b = m.corner[lprev(start)]
+                    if xy[d, 0] < xy[b, 0] or (xy[d, 0] == xy[b, 0] and xy[d, 1] < xy[b, 1]):
+                        start = h
+                break
+    if start < 0:
+        return 0
+    m.hull_edge = m.twin[start]  # the hull edge leaving the least vertex: where Triangle's outer space points
+    hull: Index = 0
+    h = start
+    nxt: Index
+    tw: Index
+    for _ in range(m.nslot):
+        nxt = lprev(m.twin[lprev(h)])
+        tw = m.twin[h]
+        if tw != NO_EDGE:
+            m.twin[tw] = NO_EDGE
+            hull += 1
+        kill_triangle(m, h // 3)
+        h = nxt
+        if h == start or m.stamp[h // 3] <= 0:
+            break
+    return hull + remove_ghosts(m)  # (none should be left)
 
 
 @cython.ccall

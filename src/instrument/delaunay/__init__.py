@@ -27,7 +27,7 @@ import math
 
 import numpy as np
 
-from ..core.mesh import Mesh, relabel_corners, remove_ghosts
+from ..core.mesh import Mesh, relabel_corners, remove_ghosts_around_hull
 from ..core.filled import filled
 from ..counters import C_DUPLICATE
 from . import divconq, parallel
@@ -95,7 +95,7 @@ def delaunay(
             m = Mesh(pts, 2 * n + 8 + extra_triangles, vertices=n + extra_vertices, work=work, **tables)
             del pts
             parallel.triangulate(m, top, alternate, pool)
-    remove_ghosts(m)
+    remove_ghosts_around_hull(m)
     _restore_numbering(m, xy, ids)
     return m, dup
 

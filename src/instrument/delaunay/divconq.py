@@ -304,11 +304,12 @@ def _three(m: Mesh, hull_at: cython.int[::1], a: Index, b: Index, c: Index) -> c
     s: cython.double = orient2d(xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[c, 0], xy[c, 1])
     h_ab: Index
     h_bc: Index
-    if s == 0.0:
+    if s == 0.0:  # in Triangle's slots: (a, b), (b, a), (c, b), (b, c), each with the ghost third
+        h_ba: Index = _ghost(m, hull_at, b, a)
         h_ab = _ghost(m, hull_at, a, b)
         h_bc = _ghost(m, hull_at, b, c)
         h_cb: Index = _ghost(m, hull_at, c, b)
-        h_ba: Index = _ghost(m, hull_at, b, a)
+        hull_at[b] = cython.cast(cython.int, h_ba)
         bond(m, h_ab, h_ba)
         bond(m, h_bc, h_cb)
         _link(m, h_ab, h_bc)

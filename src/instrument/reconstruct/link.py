@@ -158,7 +158,7 @@ def attach_segments(
             if m.corner[lprev(order[j])] == a:
                 e = order[j]
         if e != NO_EDGE:
-            mark_subsegment(m, segs, e, in_marker[s], cython.cast(cython.int, s))
+            mark_subsegment(m, segs, e, in_marker[s], cython.cast(cython.int, s), False)
         else:
             unmatched[n] = i
             n += 1

@@ -62,6 +62,7 @@ from cython.cimports.instrument.refine.criteria import queue_rejected_fan, stein
 from cython.cimports.instrument.refine.deletion import chew_delete
 from cython.cimports.instrument.refine.encroach import check_subsegment, enc_edge, enc_free, enc_push, in_lens, may_split, queue_side
 from cython.cimports.instrument.refine.ghosts import rejected_fan_records, revive_ghosts
+from cython.cimports.instrument.refine.inplace import split_in_place, splits_cleanly
 from cython.cimports.instrument.refine.order import TRIANGLE
 from cython.cimports.instrument.refine.queues import ghost_room, ghost_slot, ghosts_orphaned, queue_clear, queue_compact, queue_pop, queue_push, queue_used
 from cython.cimports.instrument.refine.state import T_CIRCUMCENTER, T_OFFCENTER, T_REJECTED, T_SEGMENT, Refiner, step_begins, step_undone, trace_full, trace_row
@@ -533,6 +534,12 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
         forget_cavity(r, m, n)
         step_undone(r, m.work)
         return NEED_ROOM
+    # before the first list, an ordinary split (both sides in the cavity) is
+    # made in Triangle's records (inplace.py)
+    if not triangles and far < 0 and splits_cleanly(m, e, px, py):
+        forget_cavity(r, m, n)
+        split_in_place(r, m, segs, e, px, py, e0, e1, split)
+        return DONE
     order_rim(r, m, nb, d)  # Triangle circles the new vertex from e's destination
     revive_ghosts(r, m, e, nb)  # a rejected point's queued triangles this vertex remakes
     rec: Index = m.seg[e]

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..carve.infect import start_hull_edge
 from ..core.navigate import build_vertex_edges
 from ..core.status import DONE, FAILED, NEED_BUFFER
 from ..counters import C_STEINER
@@ -122,7 +123,9 @@ def merge_duplicates(rows: np.ndarray, markers: np.ndarray) -> tuple[np.ndarray,
 
 
 def enclose_hull(ms: MeshState) -> None:
-    """-c: every hull edge becomes a subsegment with marker 1."""
+    """-c: every hull edge becomes a subsegment with marker 1, in Triangle's
+    order: around the hull from the edge its outer-space handle holds."""
     ms.mesh.add_constraint_tables()
-    while not mark_hull(ms.mesh, ms.segs, -1):
+    start = start_hull_edge(ms.mesh, ms.mesh.hull_start)
+    while not mark_hull(ms.mesh, ms.segs, -1, start):
         ms.grow(records=ms.segs.capacity)

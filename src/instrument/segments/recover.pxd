@@ -17,8 +17,8 @@ cdef class Recovery:
 cpdef (Index, int) turn_to(Mesh m, Index a, Index b, Index e0, Index plain, Index sa, Index sb) noexcept nogil
 cpdef double crossing_parameter(double ax, double ay, double bx, double by,
                                 double rx, double ry, double lx, double ly) noexcept nogil
-cpdef void mark_subsegment(Mesh m, Subsegments segs, Index e, int marker, int source) noexcept nogil
+cpdef void mark_subsegment(Mesh m, Subsegments segs, Index e, int marker, int source, bint against) noexcept nogil
 cpdef bint restore_delaunay(Mesh m, long long[::1] stack) noexcept nogil
 cpdef int insert_segments(Mesh m, Subsegments segs, Recovery work) noexcept nogil
-cpdef bint mark_hull(Mesh m, Subsegments segs, int source) noexcept nogil
+cpdef bint mark_hull(Mesh m, Subsegments segs, int source, Index start) noexcept nogil
 cpdef Index count_inverted(Mesh m) noexcept nogil

@@ -37,16 +37,18 @@ from __future__ import annotations
 import numpy as np
 
 import cython
-from cython.cimports.instrument.core.insert import flip, lawson, should_flip, split_edge, split_triangle, star_edges
+from cython.cimports.instrument.core.insert import (
+    flip, flip_in_place, lawson, lawson_in_place, should_flip, split_edge, split_edge_in_place, split_triangle, star_edges,
+)
 from cython.cimports.instrument.core.locate import LOC_INSIDE, LOC_ON_EDGE, LOC_ON_VERTEX, walk
 from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, Index, Mesh, lnext, lprev, set_parent, spare_triangles
 from cython.cimports.instrument.core.navigate import find_edge, remember_corners, vertex_edge
-from cython.cimports.instrument.core.predicates import dot_sign, orient2d
+from cython.cimports.instrument.core.predicates import dot_sign, incircle, orient2d
 from cython.cimports.instrument.core.scaling import crossing_terms, unit_scale
 from cython.cimports.instrument.core.status import DONE, FAILED, NEED_BUFFER, NEED_ROOM
 from cython.cimports.instrument.core.subsegments import Subsegments, new_record
 from cython.cimports.instrument.segments.crossing import crossing_point, scouted_crossing
-from cython.cimports.instrument.counters import C_ORIENT, C_STEINER
+from cython.cimports.instrument.counters import C_INCIRCLE, C_ORIENT, C_STEINER
 from cython.cimports.libc.math import fabs, sqrt
 
 # what recovering one piece found (_recover)
@@ -55,6 +57,7 @@ _PIECE_CONTINUES = cython.declare(cython.int, 1)  # a vertex on it: go on from t
 _PIECE_CROSSES = cython.declare(cython.int, 2)  # it crosses a subsegment (the caller splits it)
 _PIECE_FAILED = cython.declare(cython.int, 3)
 _PIECE_BUFFER = cython.declare(cython.int, 4)  # the scratch buffer is too small (nothing changed)
+_PIECE_SHORTENED = cython.declare(cython.int, 5)  # b's end of it is a subsegment now: go on towards the vertex
 
 
 @cython.cclass
@@ -107,16 +110,26 @@ class Recovery:
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
-def mark_subsegment(m: Mesh, segs: Subsegments, e: Index, marker: cython.int, source: cython.int) -> cython.void:
+def mark_subsegment(
+    m: Mesh, segs: Subsegments, e: Index, marker: cython.int, source: cython.int, against: cython.bint
+) -> cython.void:
     """Make edge ``e`` (both sides) a subsegment of input segment ``source``.
 
-    A new edge gets a new record.  An edge that already is a subsegment (a
-    duplicate segment) keeps its record, taking ``marker`` if its own is 0.
+    A new edge gets a new record, whose ends run along ``e`` (from its
+    origin to its destination), or against it if ``against``: ``e`` is
+    then the twin of the edge Triangle makes the subsegment on.  The
+    record's direction decides which side of it refinement tests first
+    (splits.first_side), as Triangle's record does (found by comparing the
+    encroached subsegments it queues first: tests/engine/test_pool_order.py).  An edge that already is a subsegment (a duplicate
+    segment) keeps its record, taking ``marker`` if its own is 0.
     Endpoints whose marker is 0 take the subsegment's.
     """
     old: Index = m.seg[e]
     if old == NO_SEG:
-        old = new_record(segs, marker, source, m.corner[lnext(e)], m.corner[lprev(e)])
+        if against:
+            old = new_record(segs, marker, source, m.corner[lprev(e)], m.corner[lnext(e)])
+        else:
+            old = new_record(segs, marker, source, m.corner[lnext(e)], m.corner[lprev(e)])
         m.seg[e] = cython.cast(cython.int, old)
         if m.twin[e] != NO_EDGE:
             m.seg[m.twin[e]] = cython.cast(cython.int, old)
@@ -330,25 +343,6 @@ def turn_to(m: Mesh, a: Index, b: Index, e0: Index, plain: Index, sa: Index, sb:
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
-def _facing_subsegment(m: Mesh, a: Index, b: Index, plain: Index, sa: Index, sb: Index) -> Index:
-    """The subsegment edge (right -> left of a -> b) of the triangle at ``a``
-    that the ray ``a -> b`` leaves through, or -1 (no such triangle, a
-    vertex on the ray, or an edge that is no subsegment)."""
-    e0: Index = vertex_edge(m, a)
-    if e0 < 0:
-        return -1
-    e: Index
-    where: cython.int
-    e, where = turn_to(m, a, b, e0, plain, sa, sb)
-    if e < 0 or where != 0:
-        return -1
-    c: Index = lnext(e)
-    return c if m.seg[c] != NO_SEG else -1
-
-
-@cython.cfunc
-@cython.nogil
-@cython.exceptval(check=False)
 def _recover(
     m: Mesh, segs: Subsegments, a: Index, b: Index, marker: cython.int, source: cython.int, buf: cython.longlong[::1],
     plain: Index, sa: Index, sb: Index,
@@ -379,12 +373,30 @@ def _recover(
     x: Index
     if where == 1:  # dest(e) on the ray
         d = m.corner[lprev(e)]
-        mark_subsegment(m, segs, e, marker, source)
+        mark_subsegment(m, segs, e, marker, source, False)  # Triangle makes it on a -> d
         return (_PIECE_DONE if d == b else _PIECE_CONTINUES), d, -1
     if where == 2:  # apex(e) on the ray: the edge apex -> a is lprev(e)
         x = m.corner[e]
-        mark_subsegment(m, segs, lprev(e), marker, source)
+        mark_subsegment(m, segs, lprev(e), marker, source, True)  # Triangle makes it on a -> x
         return (_PIECE_DONE if x == b else _PIECE_CONTINUES), x, -1
+    # Triangle looks from b's end too before recovering the piece: an edge
+    # from b along the segment, or a subsegment across it at b
+    eb: Index
+    wb: cython.int
+    if m.seg[lnext(e)] == NO_SEG:
+        eb = vertex_edge(m, b)
+        if eb >= 0:
+            eb, wb = turn_to(m, b, a, eb, plain, sa, sb)
+            if eb >= 0 and wb == 1:
+                d = m.corner[lprev(eb)]
+                mark_subsegment(m, segs, eb, marker, source, False)
+                return (_PIECE_DONE if d == a else _PIECE_SHORTENED), d, -1
+            if eb >= 0 and wb == 2:
+                x = m.corner[eb]
+                mark_subsegment(m, segs, lprev(eb), marker, source, True)
+                return (_PIECE_DONE if x == a else _PIECE_SHORTENED), x, -1
+            if eb >= 0 and wb == 0 and m.seg[lnext(eb)] != NO_SEG:
+                return _PIECE_CROSSES, b, lnext(eb)
     # Walk through the crossed triangles, queueing the crossed edges as
     # vertex pairs (right, left): flips change edge ids, not vertex pairs.
     n: Index = buf.shape[0] // 4
@@ -397,14 +409,13 @@ def _recover(
     tw: Index
     y: Index
     s: cython.double
-    cb: Index
+    fuzzy: cython.bint = False  # a vertex taken to be on the piece within rounding only
+    crosses: cython.bint
     while end < 0:
         if m.seg[c] != NO_SEG:
-            if nq > 0:  # not the edge facing a: the one facing b first
-                cb = _facing_subsegment(m, b, a, plain, sa, sb)
-                if cb >= 0:
-                    return _PIECE_CROSSES, b, cb
-            return _PIECE_CROSSES, a, c
+            if nq == 0:
+                return _PIECE_CROSSES, a, c
+            break
         tw = m.twin[c]
         if tw == NO_EDGE:
             return _PIECE_FAILED, -1, -1
@@ -425,15 +436,170 @@ def _recover(
             c = lprev(tw)
         else:  # y is b, or a vertex exactly on the segment
             end = y
+            if y != b:
+                m.work[C_ORIENT] += 1
+                fuzzy = orient2d(xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[y, 0], xy[y, 1]) != 0.0
+    if not fuzzy:  # Triangle's way, which leaves its records where Triangle's are
+        e, crosses = _constrained_edge(m, e, b, plain, sa, sb, stack)
+        if e < 0:
+            return _PIECE_FAILED, -1, -1
+        if crosses:
+            return _PIECE_CROSSES, a, e
+        mark_subsegment(m, segs, e, marker, source, False)  # e: end -> a, as Triangle's
+        return (_PIECE_DONE if end == b else _PIECE_CONTINUES), end, -1
     if not _flip_out(m, a, end, qr, ql, nq, n, stack):
         return _PIECE_FAILED, -1, -1
     e = find_edge(m, a, end)
     if e < 0:
         return _PIECE_FAILED, -1, -1
-    mark_subsegment(m, segs, e, marker, source)
+    mark_subsegment(m, segs, e, marker, source, True)  # (Triangle would make it on end -> a)
     if not restore_delaunay(m, stack):
         return _PIECE_FAILED, -1, -1
     return (_PIECE_DONE if end == b else _PIECE_CONTINUES), end, -1
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _flip_here(m: Mesh, e: Index) -> cython.void:
+    """``flip_in_place`` (Triangle's record rewrite), then the corners' hints."""
+    tw: Index = m.twin[e]
+    flip_in_place(m, e)
+    remember_corners(m, e // 3)
+    remember_corners(m, tw // 3)
+
+
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _edge_in_slot(m: Mesh, t: Index, u: Index, v: Index) -> Index:
+    """The edge ``u -> v`` of slot ``t``, or -1."""
+    for k in range(3):
+        if m.corner[3 * t + (k + 1) % 3] == u and m.corner[3 * t + (k + 2) % 3] == v:
+            return 3 * t + k
+    return -1
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _fix_side(m: Mesh, t0: Index, left: cython.bint, stack: cython.longlong[::1]) -> cython.bint:
+    """Make one side of a segment being recovered constrained Delaunay
+    again, after the flip that brought the origin ``v`` of edge ``t0`` into
+    the fan around the segment's first end (Triangle's stack-based method
+    for the pocket on that side, its ``delaunayfixup``): ``v`` is treated as
+    just inserted, in the sector of ``t0``'s triangle only.
+
+    Across the edge opposite ``v`` lies a triangle with far vertex ``f``.
+    Nothing is done at a mesh boundary or a subsegment, nor where the
+    corner of the pocket next to ``v`` (on the ``left`` side or the right
+    one) is reflex as seen with ``f``: the inverted triangle there waits
+    for a later vertex.  Otherwise the edge flips if the far triangle is
+    inverted (a waiting one, now unstacked) or if ``f`` is inside the
+    circle of ``t0``'s triangle; then both triangles the flip leaves at
+    ``v`` are treated the same way, the one on ``t0``'s side first (depth
+    first, by an explicit stack of edges, which stay valid: flips rewrite
+    slots in place).  Edges whose origin is ``v`` keep their slot through
+    the flips, so the caller finds ``t0``'s edge again there.  False if
+    ``stack`` is too short (it holds one edge per pocket triangle at most)."""
+    xy = m.xy
+    n: Index = 1
+    stack[0] = t0
+    t: Index
+    near: Index
+    far: Index
+    nv: Index
+    lv: Index
+    rv: Index
+    fv: Index
+    while n > 0:
+        n -= 1
+        t = stack[n]
+        near = lnext(t)
+        far = m.twin[near]
+        if far == NO_EDGE or m.seg[near] != NO_SEG:
+            continue
+        nv = m.corner[near]
+        lv = m.corner[lnext(near)]
+        rv = m.corner[lprev(near)]
+        fv = m.corner[far]
+        m.work[C_ORIENT] += 1
+        if left:
+            if orient2d(xy[nv, 0], xy[nv, 1], xy[lv, 0], xy[lv, 1], xy[fv, 0], xy[fv, 1]) <= 0.0:
+                continue  # lv is reflex: the pocket waits
+        elif orient2d(xy[fv, 0], xy[fv, 1], xy[rv, 0], xy[rv, 1], xy[nv, 0], xy[nv, 1]) <= 0.0:
+            continue  # rv is reflex
+        m.work[C_ORIENT] += 1
+        if orient2d(xy[rv, 0], xy[rv, 1], xy[lv, 0], xy[lv, 1], xy[fv, 0], xy[fv, 1]) > 0.0:
+            # the far triangle is not inverted: flip only if not locally Delaunay
+            m.work[C_INCIRCLE] += 1
+            if incircle(xy[lv, 0], xy[lv, 1], xy[fv, 0], xy[fv, 1], xy[rv, 0], xy[rv, 1], xy[nv, 0], xy[nv, 1]) <= 0.0:
+                continue
+        if n + 2 > stack.shape[0]:
+            return False
+        _flip_here(m, near)
+        stack[n] = far  # now (v, f, rv), origin v
+        stack[n + 1] = lprev(t)  # now (v, lv, f), origin v: first
+        n += 2
+    return True
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _constrained_edge(
+    m: Mesh, e: Index, b: Index, plain: Index, sa: Index, sb: Index, stack: cython.longlong[::1]
+) -> tuple[Index, cython.bint]:
+    """Recover the segment from ``a`` = org(``e``) towards ``b`` as Triangle
+    does, flipping in place (``flip_in_place``): ``e``'s triangle is the one
+    the segment leaves ``a`` through, crossing edge lnext(``e``).
+
+    Each crossed edge is flipped, which brings the vertex beyond it into a
+    fan around ``a``; the pocket on that vertex's side of the segment is
+    fixed (``_fix_side``), and the walk goes on with the next crossed edge
+    of the fan, until the vertex brought in is ``b`` or lies on the
+    segment (``_side``), when both sides are fixed, or the next edge to
+    cross is a subsegment.  The caller checked that the walk meets no
+    vertex on the segment within rounding only.  Returns ``(f, False)``
+    with ``f`` the edge from the last vertex brought in to ``a`` (the one
+    to mark), or ``(f, True)`` with ``f`` the subsegment edge the segment
+    crosses (right -> left, apex ``a``); ``(-1, False)`` if ``stack`` was
+    too short."""
+    a: Index = m.corner[lnext(e)]
+    f: Index = lnext(e)
+    f2: Index
+    far: Index
+    t: Index
+    s: cython.double
+    _flip_here(m, f)  # f: far -> a now
+    while True:
+        far = m.corner[lnext(f)]
+        if far == b:
+            s = 0.0
+        else:
+            m.work[C_ORIENT] += 1
+            s = _side(m, a, b, far, plain, sa, sb)
+        f2 = lnext(m.twin[f])  # far -> the vertex clockwise of a around far
+        if s == 0.0:
+            t = f // 3
+            if not _fix_side(m, f, False, stack):
+                return -1, False
+            if not _fix_side(m, f2, True, stack):
+                return -1, False
+            return _edge_in_slot(m, t, far, a), False
+        if s > 0.0:  # far is left of the segment: the next crossed edge is right -> far
+            if not _fix_side(m, f2, True, stack):
+                return -1, False
+            f = lprev(f)
+        else:  # far is right: the next crossed edge is far -> left
+            t = f // 3
+            if not _fix_side(m, f, False, stack):
+                return -1, False
+            f = lnext(m.twin[_edge_in_slot(m, t, far, a)])
+        if m.seg[f] != NO_SEG:
+            return f, True
+        _flip_here(m, f)
 
 
 @cython.cfunc
@@ -661,13 +827,41 @@ def _scouted_fits(
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
+def _splits_cleanly(m: Mesh, c: Index, px: cython.double, py: cython.double) -> cython.bint:
+    """Would splitting edge ``c`` (``r -> l``, apex ``b``; beyond it apex
+    ``x``) at the point ``p`` leave four counter-clockwise triangles ``(p,
+    l, b)``, ``(b, r, p)``, ``(p, x, l)``, ``(r, x, p)``?  Whether ``p`` is
+    on ``c``'s line does not matter (a rounded crossing point seldom is):
+    only that it lies inside the quadrilateral the two triangles make, as
+    seen from its corners."""
+    xy = m.xy
+    r: Index = m.corner[lnext(c)]
+    l: Index = m.corner[lprev(c)]
+    b: Index = m.corner[c]
+    m.work[C_ORIENT] += 2
+    if not (orient2d(px, py, xy[l, 0], xy[l, 1], xy[b, 0], xy[b, 1]) > 0.0
+            and orient2d(xy[b, 0], xy[b, 1], xy[r, 0], xy[r, 1], px, py) > 0.0):
+        return False
+    tw: Index = m.twin[c]
+    if tw == NO_EDGE:
+        return True
+    x: Index = m.corner[tw]
+    m.work[C_ORIENT] += 2
+    return (orient2d(px, py, xy[x, 0], xy[x, 1], xy[l, 0], xy[l, 1]) > 0.0
+            and orient2d(xy[r, 0], xy[r, 1], xy[x, 0], xy[x, 1], px, py) > 0.0)
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
 def _split_at_crossing(
-    m: Mesh, segs: Subsegments, a: Index, b: Index, c: Index, stack: cython.longlong[::1]
-) -> tuple[Index, cython.bint]:
+    m: Mesh, segs: Subsegments, a: Index, b: Index, c: Index, stack: cython.longlong[::1],
+    marker: cython.int, source: cython.int,
+) -> tuple[Index, cython.bint, cython.bint]:
     """Make a vertex where segment ``a b`` crosses subsegment edge ``c``
     (right -> left of ``a -> b``), ``a`` the end the piece was walked from.
 
-    Returns ``(v, reroute)``, ``v = -1`` if the tables are full.  The
+    Returns ``(v, reroute, marked)``, ``v = -1`` if the tables are full.  The
     crossing point is Triangle's (``scouted_crossing``: along ``c`` from its
     right end, in doubles, against ``b``) where that lands within 2^-40 of
     the coordinates' magnitude of the exact crossing and in one of the two
@@ -678,7 +872,14 @@ def _split_at_crossing(
     exactly on ``c`` it splits ``c``; anywhere else (or on an existing
     vertex) ``reroute`` is True and the caller re-routes ``c`` through it.
     The mesh stays a valid triangulation either way; forcing a rounded
-    point onto ``c`` could fold it.  A point within a few units in the last
+    point onto ``c`` could fold it.  Where it would not (the four triangles
+    the split of ``c`` makes are counter-clockwise, as they are unless the
+    point rounded out of the two triangles beside ``c``), ``c`` is split
+    at it as Triangle splits it (``split_edge_in_place``, then
+    ``lawson_in_place``: its records where Triangle's are; the half from
+    ``c``'s right end gets the new record), and the piece from the point
+    to ``a`` is marked at once (``marked``; with ``marker`` and ``source``),
+    as Triangle marks it: the caller goes on from the point.  A point within a few units in the last
     place of one of the four endpoints (or of a corner of the triangle it
     falls in, or of the apexes of ``c``) is taken to be that vertex: a
     crossing vertex made earlier is only nearly on its lines, so later
@@ -736,29 +937,49 @@ def _split_at_crossing(
             xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[right, 0], xy[right, 1], xy[left, 0], xy[left, 1]
         )
     if near_right and _inside(xy, a, b, right):
-        return right, False
+        return right, False, False
     if near_left and _inside(xy, a, b, left):
-        return left, False
+        return left, False, False
     if near_a and _inside(xy, right, left, a):
-        return a, True
+        return a, True, False
     if near_b and _inside(xy, right, left, b):
-        return b, True
+        return b, True, False
     if near_right:
-        return right, False
+        return right, False, False
     if near_left:
-        return left, False
+        return left, False, False
     if near_a:
-        return a, True
+        return a, True, False
     if near_b:
-        return b, True
+        return b, True, False
     status: cython.int
     e: Index
+    if _splits_cleanly(m, c, px, py):
+        half0: Index = new_record(segs, segs.marker[r], segs.source[r], segs.ends[r, 0], segs.ends[r, 1])
+        if half0 < 0:
+            return -1, False, False
+        xy[nv, 0] = px
+        xy[nv, 1] = py
+        set_parent(m, nv, right, left, right, t, 0.0)
+        m.nvert = nv + 1
+        m.vmark[nv] = segs.marker[r]
+        m.work[C_STEINER] += 1
+        lawson_in_place(m, split_edge_in_place(m, c, nv, cython.cast(cython.int, half0), 2))
+        _ends_at(segs, r, half0, left, right, nv)
+        if segs.ends[half0, 0] == nv and segs.ends[half0, 1] == right:  # Triangle's new record runs right -> p
+            segs.ends[half0, 0] = cython.cast(cython.int, right)
+            segs.ends[half0, 1] = cython.cast(cython.int, nv)
+        e = find_edge(m, nv, a)
+        if e < 0:
+            return -1, False, False
+        mark_subsegment(m, segs, e, marker, source, False)  # e: p -> a, as Triangle's
+        return nv, False, True
     status, e = walk(m, c // 3, px, py, 4 * m.stamp.shape[0] + 64)
     if status == LOC_ON_VERTEX:
-        return m.corner[lnext(e)], True
+        return m.corner[lnext(e)], True, False
     if status != LOC_INSIDE and status != LOC_ON_EDGE:
         # rounded off the mesh (c is on the boundary): use c's nearer end
-        return (right if t < 0.5 else left), False
+        return (right if t < 0.5 else left), False, False
     # as near another vertex (one nearly on both lines: a corner of the
     # triangle it falls in, or across c from it): that vertex
     near_v: Index
@@ -774,14 +995,14 @@ def _split_at_crossing(
             break
         if _near(xy, near_v, px, py, tol):
             if _inside(xy, a, b, near_v) and _inside(xy, right, left, near_v):
-                return near_v, True
+                return near_v, True, False
             if first_near < 0:
                 first_near = near_v
     if first_near >= 0:
-        return first_near, True
+        return first_near, True, False
     half: Index = new_record(segs, segs.marker[r], segs.source[r], segs.ends[r, 0], segs.ends[r, 1])
     if half < 0:
-        return -1, False
+        return -1, False, False
     xy[nv, 0] = px
     xy[nv, 1] = py
     set_parent(m, nv, right, left, right, t, 0.0)
@@ -811,7 +1032,7 @@ def _split_at_crossing(
     n: Index = star_edges(m, first, stack)
     last: Index = lawson(m, stack, n)
     remember_corners(m, last)
-    return nv, reroute
+    return nv, reroute, False
 
 
 @cython.cfunc
@@ -871,6 +1092,7 @@ def insert_segments(m: Mesh, segs: Subsegments, work: Recovery) -> cython.int:
     cl: Index
     p: Index
     reroute: cython.bint
+    marked: cython.bint
     src_c: Index
     marker: cython.int
     e1: Index
@@ -910,6 +1132,8 @@ def insert_segments(m: Mesh, segs: Subsegments, work: Recovery) -> cython.int:
             work.top = sp
         elif kind == _PIECE_CONTINUES:
             pieces[sp, 0] = v
+        elif kind == _PIECE_SHORTENED:
+            pieces[sp, 1] = v
         elif kind == _PIECE_BUFFER:
             work.handled -= 1
             return NEED_BUFFER
@@ -919,9 +1143,15 @@ def insert_segments(m: Mesh, segs: Subsegments, work: Recovery) -> cython.int:
             cl = m.corner[lprev(c)]
             e1 = v
             e2 = b if v == a else a
-            p, reroute = _split_at_crossing(m, segs, e1, e2, c, buf)
+            p, reroute, marked = _split_at_crossing(m, segs, e1, e2, c, buf, marker, cython.cast(cython.int, src))
             if p < 0:
                 return NEED_ROOM
+            if marked:  # the piece from p to e1 is a subsegment: go on from p
+                if e1 == a:
+                    pieces[sp, 0] = p
+                else:
+                    pieces[sp, 1] = p
+                continue
             if reroute:
                 # re-route the crossed subsegment through p: free the edge
                 # and queue its two halves as pieces of its own segment
@@ -970,20 +1200,39 @@ def insert_segments(m: Mesh, segs: Subsegments, work: Recovery) -> cython.int:
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
-def mark_hull(m: Mesh, segs: Subsegments, source: cython.int) -> cython.bint:
+def mark_hull(m: Mesh, segs: Subsegments, source: cython.int, start: Index) -> cython.bint:
     """-c (or refinement of a point set): every boundary edge becomes a
     subsegment with marker 1; one that already is keeps its record but takes
-    marker 1 if its own is 0.  Returns False if records ran out."""
-    e: Index
+    marker 1 if its own is 0.  Returns False if records ran out (call again
+    after growing them: the edges marked keep their records).
+
+    The edges are taken around the hull counter-clockwise from boundary
+    edge ``start``, the one Triangle's outer-space handle holds
+    (carve/infect.py's start_hull_edge), as Triangle makes their records,
+    so the records come in Triangle's order (the encroached ones are
+    queued in that order); a boundary the walk does not reach (there is
+    one hull) is marked in slot order."""
+    e: Index = start
+    f: Index
+    for _ in range(3 * m.nslot):
+        if e < 0:
+            break
+        if segs.count >= segs.marker.shape[0]:
+            return False
+        mark_subsegment(m, segs, e, 1, source, False)
+        f = lnext(e)  # the next hull edge leaves this one's destination
+        while m.twin[f] != NO_EDGE:
+            f = lnext(m.twin[f])
+        e = f if f != start else NO_EDGE
     for t in range(m.nslot):
         if m.stamp[t] <= 0:
             continue
         for k in range(3):
             e = 3 * t + k
-            if m.twin[e] == NO_EDGE:
+            if m.twin[e] == NO_EDGE and m.seg[e] == NO_SEG:
                 if segs.count >= segs.marker.shape[0]:
                     return False
-                mark_subsegment(m, segs, e, 1, source)
+                mark_subsegment(m, segs, e, 1, source, False)
     return True
 
 
