@@ -83,25 +83,6 @@ DEFECTS += [
     ),
 ]
 
-DEFECTS += [
-    Defect(
-        "near-collinear-split-not-delaunay",
-        "a subsegment split in a chain of nearly collinear points under pucS19njQ leaves an edge that is not "
-        "locally Delaunay (4 of 200 chains of scripts/near_collinear_family.py --seed 1: cases 90, 107, 127, "
-        "172), two ways. (1) The split point p rounds off the line of o d toward the apex c (4.5e-19 in "
-        "orient2d in case 172) while the far apex y lies near the line too: the cavity always takes the "
-        "triangle across o d, and the spoke p y is then not locally Delaunay (the fan's angles at o and d beside "
-        "it exceed 180 degrees by what p's bend adds), where the constrained Delaunay mesh keeps o d as an edge "
-        "with the thin triangle (o, d, p) beside it (Triangle's Lawson flips would; "
-        "regressions/near-collinear-chain-split-bent.json). (2) The split at an apex on the subsegment within "
-        "rounding flips o d to c y (case 90: edge {1, 13}): fixed, the flip is refused where c y itself would not "
-        "be Delaunay and Lawson's flips around c follow it (legalize_fan; "
-        "regressions/near-collinear-chain-apex-flip-far-edge.json passes); (1) is open",
-        lambda c, f, n: f.kind == "invalid-mesh" and "not locally Delaunay" in f.message
-        and c.family.startswith("near-collinear"),
-    ),
-]
-
 BY_ID = {d.id: d for d in DEFECTS}
 
 
