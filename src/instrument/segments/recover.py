@@ -854,6 +854,22 @@ def _splits_cleanly(m: Mesh, c: Index, px: cython.double, py: cython.double) -> 
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
+def _place_crossing(m: Mesh, segs: Subsegments, r: Index, nv: Index, px: cython.double, py: cython.double,
+                    right: Index, left: Index, t: cython.double) -> cython.void:
+    """Make vertex ``nv`` at (px, py), the crossing at parameter ``t`` of
+    subsegment ``right -> left`` (record ``r``), whichever way it is then
+    inserted."""
+    m.xy[nv, 0] = px
+    m.xy[nv, 1] = py
+    set_parent(m, nv, right, left, right, t, 0.0)
+    m.nvert = nv + 1
+    m.vmark[nv] = segs.marker[r]
+    m.work[C_STEINER] += 1
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
 def _split_at_crossing(
     m: Mesh, segs: Subsegments, a: Index, b: Index, c: Index, stack: cython.longlong[::1],
     marker: cython.int, source: cython.int,
@@ -958,12 +974,7 @@ def _split_at_crossing(
         half0: Index = new_record(segs, segs.marker[r], segs.source[r], segs.ends[r, 0], segs.ends[r, 1])
         if half0 < 0:
             return -1, False, False
-        xy[nv, 0] = px
-        xy[nv, 1] = py
-        set_parent(m, nv, right, left, right, t, 0.0)
-        m.nvert = nv + 1
-        m.vmark[nv] = segs.marker[r]
-        m.work[C_STEINER] += 1
+        _place_crossing(m, segs, r, nv, px, py, right, left, t)
         lawson_in_place(m, split_edge_in_place(m, c, nv, cython.cast(cython.int, half0), 2))
         _ends_at(segs, r, half0, left, right, nv)
         if segs.ends[half0, 0] == nv and segs.ends[half0, 1] == right:  # Triangle's new record runs right -> p
@@ -1003,12 +1014,7 @@ def _split_at_crossing(
     half: Index = new_record(segs, segs.marker[r], segs.source[r], segs.ends[r, 0], segs.ends[r, 1])
     if half < 0:
         return -1, False, False
-    xy[nv, 0] = px
-    xy[nv, 1] = py
-    set_parent(m, nv, right, left, right, t, 0.0)
-    m.nvert = nv + 1
-    m.vmark[nv] = segs.marker[r]
-    m.work[C_STEINER] += 1
+    _place_crossing(m, segs, r, nv, px, py, right, left, t)
     reroute: cython.bint = True
     first: Index
     split: Index
