@@ -58,7 +58,7 @@ from __future__ import annotations
 import numpy as np
 
 import cython
-from cython.cimports.instrument.core.mesh import NO_EDGE, Index, Mesh, bond, kill_triangle, lnext, lprev, new_triangle
+from cython.cimports.instrument.core.mesh import NO_EDGE, Index, Mesh, bond, dest, kill_triangle, lnext, lprev, new_triangle, org
 from cython.cimports.instrument.core.predicates import incircle, orient2d
 from cython.cimports.instrument.counters import C_CREATED, C_DELETED, C_DUPLICATE, C_FLIP, C_INCIRCLE, C_ORIENT, C_WALK
 
@@ -82,20 +82,6 @@ BLOCK = cython.declare(cython.Py_ssize_t, 4092)
 # ------------------------------------------------------------ small helpers
 
 
-@cython.cfunc
-@cython.inline
-@cython.nogil
-@cython.exceptval(check=False)
-def _org(m: Mesh, e: Index) -> Index:
-    return m.corner[lnext(e)]
-
-
-@cython.cfunc
-@cython.inline
-@cython.nogil
-@cython.exceptval(check=False)
-def _dest(m: Mesh, e: Index) -> Index:
-    return m.corner[lprev(e)]
 
 
 @cython.cfunc
@@ -189,8 +175,8 @@ def _walk(m: Mesh, e: Index, px: cython.double, py: cython.double, st: cython.lo
     while steps > 0:
         steps -= 1
         m.work[C_WALK] += 1
-        o = _org(m, e)
-        d = _dest(m, e)
+        o = org(m, e)
+        d = dest(m, e)
         a = m.corner[e]
         if _same(m, a, px, py):
             st[ST_RECENT] = lprev(e)
@@ -258,13 +244,13 @@ def _locate(m: Mesh, px: cython.double, py: cython.double, st: cython.longlong[:
     on the start edge's line strictly between its ends is ON_EDGE; a point
     right of it starts from the other side; then ``_walk``."""
     start: Index = st[ST_DUMMY]
-    best: cython.double = _distance(m, _org(m, start), px, py)
+    best: cython.double = _distance(m, org(m, start), px, py)
     dist: cython.double
     recent: Index = st[ST_RECENT]
     if recent >= 0:
-        if _same(m, _org(m, recent), px, py):
+        if _same(m, org(m, recent), px, py):
             return ON_VERTEX, recent
-        dist = _distance(m, _org(m, recent), px, py)
+        dist = _distance(m, org(m, recent), px, py)
         if dist < best:
             start = recent
             best = dist
@@ -289,8 +275,8 @@ def _locate(m: Mesh, px: cython.double, py: cython.double, st: cython.longlong[:
                 best = dist
         base += population
         block = BLOCK
-    o: Index = _org(m, start)
-    d: Index = _dest(m, start)
+    o: Index = org(m, start)
+    d: Index = dest(m, start)
     if _same(m, o, px, py):
         st[ST_RECENT] = start
         return ON_VERTEX, start
@@ -327,8 +313,8 @@ def _split_triangle(m: Mesh, e: Index, q: Index, nb: Index, st: cython.longlong[
     """Point q inside the triangle of handle e = (a, b, c): the record keeps
     (a, b, q), new records (b, c, q) and (c, a, q) in our corner order."""
     t: Index = e // 3
-    a: Index = _org(m, e)
-    b: Index = _dest(m, e)
+    a: Index = org(m, e)
+    b: Index = dest(m, e)
     c: Index = m.corner[e]
     w_bc: Index = m.twin[lnext(e)]
     w_ca: Index = m.twin[lprev(e)]
@@ -352,8 +338,8 @@ def _split_edge(m: Mesh, e: Index, q: Index, nb: Index, st: cython.longlong[::1]
     f = (b, a, d): e's record becomes (q, b, c), f's (b, q, d), and new
     records take (a, d, q) and (c, a, q) in our corner order."""
     f: Index = m.twin[e]
-    a: Index = _org(m, e)
-    b: Index = _dest(m, e)
+    a: Index = org(m, e)
+    b: Index = dest(m, e)
     c: Index = m.corner[e]
     d: Index = m.corner[f]
     w_ca: Index = m.twin[lprev(e)]
@@ -399,8 +385,8 @@ def _should_flip(m: Mesh, e: Index, nb: Index) -> cython.bint:
     if f == NO_EDGE:
         return False
     xy = m.xy
-    x: Index = _org(m, e)
-    y: Index = _dest(m, e)
+    x: Index = org(m, e)
+    y: Index = dest(m, e)
     q: Index = m.corner[e]
     d: Index = m.corner[f]
     if y >= nb:
@@ -423,8 +409,8 @@ def _flip(m: Mesh, e: Index, nb: Index, st: cython.longlong[::1]) -> cython.void
     handle (o, t, apex) becomes (far, apex, o), so e's record holds
     (x, d, q) and f's (d, y, q); both keep their handle numbers."""
     f: Index = m.twin[e]
-    x: Index = _org(m, e)
-    y: Index = _dest(m, e)
+    x: Index = org(m, e)
+    y: Index = dest(m, e)
     q: Index = m.corner[e]
     d: Index = m.corner[f]
     w_yq: Index = m.twin[lnext(e)]
@@ -471,7 +457,7 @@ def _legalize(m: Mesh, e: Index, stop: Index, nb: Index, st: cython.longlong[::1
             _flip(m, e, nb, st)
             e = lprev(e)
             continue
-        if _dest(m, e) == stop:
+        if dest(m, e) == stop:
             break
         e = lnext(m.twin[lnext(e)])
     st[ST_RECENT] = lprev(e)
@@ -495,7 +481,7 @@ def _free_box_record(m: Mesh, t: Index, nb: Index, hull: cython.longlong[::1]) -
     k: Index
     for k in range(3):
         e = 3 * t + k
-        if _org(m, e) < nb and _dest(m, e) < nb:
+        if org(m, e) < nb and dest(m, e) < nb:
             w = m.twin[e]
             if w == NO_EDGE:
                 continue
@@ -550,13 +536,13 @@ def _insert_all(m: Mesh, n: Index, st: cython.longlong[::1], dup: cython.longlon
         status, e = _locate(m, px, py, st)
         if status == ON_VERTEX:
             m.work[C_DUPLICATE] += 1
-            dup[q] = _org(m, e)
+            dup[q] = org(m, e)
         elif status == ON_EDGE:
             _split_edge(m, e, q, n, st)  # e is (q, b, c) now: the flips start at b-c
-            _legalize(m, lnext(e), _dest(m, e), n, st)
+            _legalize(m, lnext(e), dest(m, e), n, st)
         else:
             _split_triangle(m, e, q, n, st)
-            _legalize(m, e, _org(m, e), n, st)
+            _legalize(m, e, org(m, e), n, st)
 
 
 def box_corners(xy) -> np.ndarray:
