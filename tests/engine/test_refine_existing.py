@@ -188,15 +188,13 @@ def test_per_triangle_area_bounds(name, scale):
         anc = r["triangle_attributes"][:, 1].astype(int)
         np.testing.assert_array_equal(r["triangle_attributes"][:, 0], d["triangle_max_area"][anc])
         # measured (vertices, ours vs Triangle, ra / rpq30a): A.1 129/129,
-        # 152/150; face.1 345/351, 373/359; double_hex.1 233/233, 255/255;
-        # la.1 979/981, 1862/1906 (copying the bounds gave 130/129, 146/150;
-        # 365/351, 353/359; 232/233, 272/255; 982/981, 1832/1906).  face.1
-        # under rpq30a was 357/359 while ours parted from Triangle at its
-        # first split; now its first list of bad triangles and its first 81
-        # splits are Triangle's (refine/inplace.py), and it parts at split 82
-        # on a triangle whose area bound (carried through a later cavity)
-        # is below Triangle's 36.73, which ends 4 % above
-        assert close(len(r["vertices"]), len(t["vertices"]), rel=0.04), (opts, len(r["vertices"]), len(t["vertices"]))
+        # 150/150; face.1 345/351, 358/359; double_hex.1 233/233, 255/255;
+        # la.1 979/981, 1906/1906.  face.1 under rpq30a was 373/359 while a
+        # rejected Steiner point left the bounds as they were; Triangle's
+        # flips, undone on rejection, leave their means behind
+        # (ghosts.rejected_bounds), and with them its first 341 splits are
+        # Triangle's (scripts/queue_trace.py), against 81 before
+        assert close(len(r["vertices"]), len(t["vertices"])), (opts, len(r["vertices"]), len(t["vertices"]))
 
 
 def test_bounds_constant_between_segments_are_met_everywhere():

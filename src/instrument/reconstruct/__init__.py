@@ -54,6 +54,11 @@ How Triangle carries a triangle's area bound (found by experiment)
   edges, so a new triangle's bound is that fold along the path to its rim
   edge, in whatever order the flips run: refine/cavity.py's ``collect_cavity`` computes
   it.  Subsegment splits are insertions too.
+* A rejected insertion (the new vertex encroaches a subsegment) runs its
+  split and flips, then undoes them last first: an undo leaves both
+  triangles' bounds as they are, so the triangles the flips touched keep
+  the flips' means (-VVV's "Area constraint" lines, e.g. 58.17 and 48.07
+  both 53.12 after a rejection; refine/ghosts.py's ``rejected_bounds``).
 * A deletion (a free vertex in a subsegment's diametral circle) flips the
   star into shape without averaging: the triangle on the subsegment keeps
   the bound of the star triangle on it; every other new triangle, with

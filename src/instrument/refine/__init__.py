@@ -254,7 +254,7 @@ def grow_refiner(ms: MeshState, r: Refiner) -> None:
     # The cavity's scratch holds nothing between steps (a NEED_ROOM step
     # changed nothing and starts again): fresh zeros, which the OS maps
     # lazily, instead of copies that touch every page.
-    for name in ("cav", "fan", "bnd", "bval", "carry", "lineage", "fan_rec"):
+    for name in ("cav", "fan", "bnd", "bval", "carry", "lineage", "fan_rec", "flips"):
         if getattr(r, name).shape[0] < slots:  # (the memoryview's shape: no array made to ask)
             a = np.asarray(getattr(r, name))
             setattr(r, name, np.zeros((slots,) + a.shape[1:], dtype=a.dtype))

@@ -23,6 +23,14 @@ cpdef inline (double, double) inherited(Mesh m, Index t) noexcept nogil:
     return area, attr
 
 
+cpdef inline double flip_bound(double a, double b) noexcept nogil:
+    # the area bound both triangles of one of Triangle's flips get from
+    # bounds a and b: their mean, or none (-1) if either has none (found by
+    # experiment: see reconstruct/__init__.py); its undo keeps them
+    # (ghosts.rejected_bounds)
+    return 0.5 * (a + b) if a > 0.0 and b > 0.0 else -1.0
+
+
 cpdef inline void inherit(Mesh m, Index t, double area, double attr) noexcept nogil:
     # give triangle slot t an area bound and a regional attribute (if the run has them)
     if m.area_bound.shape[0]:

@@ -45,17 +45,6 @@ from cython.cimports.instrument.refine.queues import queue_used
 from cython.cimports.instrument.refine.state import Refiner
 
 
-@cython.cfunc
-@cython.inline
-@cython.nogil
-@cython.exceptval(check=False)
-def _flip_bound(a: cython.double, b: cython.double) -> cython.double:
-    """The area bound both triangles of one of Triangle's insertion flips
-    get from bounds ``a`` and ``b``: their mean, or none (-1) if either has
-    none (found by experiment: see reconstruct/__init__.py)."""
-    return 0.5 * (a + b) if a > 0.0 and b > 0.0 else -1.0
-
-
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
@@ -72,7 +61,7 @@ def collect_cavity(r: Refiner, m: Mesh, px: cython.double, py: cython.double, t0
     The attribute is the inner triangle's.  The area bound is the one
     Triangle's insertion (a 1-3 or 2-4 split, then Lawson flips) leaves on
     that edge's new triangle: the split copies the bound of ``t0`` (or
-    ``t1``), each flip gives both of its triangles ``_flip_bound`` of the
+    ``t1``), each flip gives both of its triangles ``flip_bound`` of the
     two.  The cavity's triangles form a tree rooted at ``t0`` (and ``t1``)
     and each flip crosses one tree edge, so the bound is that fold along
     the path from the root, whatever the order of the flips:
@@ -133,7 +122,7 @@ def collect_cavity(r: Refiner, m: Mesh, px: cython.double, py: cython.double, t0
                         r.cav[n] = u
                         if inherits:
                             area, attr = inherited(m, u)
-                            r.carry[n] = _flip_bound(passed, area)  # the flip across e
+                            r.carry[n] = flip_bound(passed, area)  # the flip across e
                         n += 1
                         continue
                     m.tflag[u] = 2
@@ -321,7 +310,7 @@ def legalize_fan(r: Refiner, m: Mesh, made: Index) -> Index:
     ``r.fan[:made]`` (it became their corner without an insertion: a
     subsegment split at an existing vertex, splits._split_at_apex), until
     every edge facing it is locally Delaunay.  Each flip gives its two
-    triangles the bound an insertion's flip gives (``_flip_bound``) and the
+    triangles the bound an insertion's flip gives (``flip_bound``) and the
     attribute of the side at the vertex (no subsegment is flipped, so both
     sides lie in one region).  Leaves the triangles around the vertex in
     ``r.fan``, corner 0 the vertex (``flip`` keeps it there), and returns
@@ -349,8 +338,8 @@ def legalize_fan(r: Refiner, m: Mesh, made: Index) -> Index:
         far, unused = inherited(m, m.twin[e] // 3)
         t1 = flip(m, e)
         t2 = m.twin[3 * t1 + 1] // 3
-        inherit(m, t1, _flip_bound(near, far), attr)
-        inherit(m, t2, _flip_bound(near, far), attr)
+        inherit(m, t1, flip_bound(near, far), attr)
+        inherit(m, t2, flip_bound(near, far), attr)
         remember_corners(m, t1)
         remember_corners(m, t2)
         r.fan[count] = t1
@@ -386,6 +375,11 @@ if not cython.compiled:
         area = m.area_bound[t] if m.area_bound.shape[0] else -1.0
         attr = m.attribute[t] if m.attribute.shape[0] else 0.0
         return area, attr
+
+    def flip_bound(a: float, b: float) -> float:
+        """The area bound both triangles of one of Triangle's flips get from
+        bounds ``a`` and ``b``: their mean, or none (-1) if either has none."""
+        return 0.5 * (a + b) if a > 0.0 and b > 0.0 else -1.0
 
     def inherit(m: Mesh, t: Index, area: float, attr: float) -> None:
         """Give triangle slot ``t`` an area bound and a regional attribute (if the run has them)."""

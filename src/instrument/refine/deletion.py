@@ -46,7 +46,11 @@ def _fill_polygon(
     """Triangulate the polygon ``chain[0..count-1]`` whose other vertices lie
     left of ``chain[0] -> chain[count-1]``: each base edge takes the vertex
     whose circle through it holds no other candidate (the constrained
-    Delaunay choice), then both sides recurse.  ``outer[i]`` is the outside
+    Delaunay choice; of cocircular ones the last in chain order, as
+    Triangle does: a deleted vertex's star with the cocircular (0.0556, 0),
+    (0.1111, 0), (0, 0.1111), (0, 0.0556) on base (0, 0.0556) -> (0.0556, 0)
+    is connected to (0.1111, 0) in its -VVV "Connecting edge to" lines),
+    then both sides recurse.  ``outer[i]`` is the outside
     twin of the polygon edge ``chain[i] chain[i+1]``.  With ``base >= 0``
     the choices are read from star_delaunay's local triangulation in
     ``r.bnd``'s columns 0 and 1 (``base``: its edge on the polygon's base;
@@ -92,7 +96,7 @@ def _fill_polygon(
                 ck = chain[k]
                 cq = chain[q]
                 if incircle(m.xy[ci, 0], m.xy[ci, 1], m.xy[cj, 0], m.xy[cj, 1], m.xy[ck, 0], m.xy[ck, 1],
-                            m.xy[cq, 0], m.xy[cq, 1]) > 0.0:
+                            m.xy[cq, 0], m.xy[cq, 1]) >= 0.0:
                     k = q
         else:  # local edge i -> j, its apex k
             le = bnd[sp, 4]

@@ -40,6 +40,7 @@ from __future__ import annotations
 
 import cython
 from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, Index, Mesh, lnext, lprev
+from cython.cimports.instrument.refine.cavity import flip_bound
 from cython.cimports.instrument.refine.queues import ghost_pending, ghost_revive
 from cython.cimports.instrument.refine.state import Refiner
 
@@ -62,10 +63,12 @@ def _lineage(r: Refiner, m: Mesh, top: Index, nb: Index) -> cython.bint:
     """Run the flips from the split's fan triangles on ``r.lineage[:top]``
     (edge, record, orientation; the first to flip on top) over the cavity
     (``m.tflag`` 1) and write each final fan triangle's record and
-    orientation in ``r.fan_rec``, in the order the flips finish them.
-    False if that order is not the rim's (``r.fan[:nb]``) or the stack is
-    too small (nothing to rely on)."""
+    orientation in ``r.fan_rec``, in the order the flips finish them, and
+    the two records of each flip in ``r.flips[:r.nflips]``, in the order
+    they flip.  False if that order is not the rim's (``r.fan[:nb]``) or
+    the stack is too small (nothing to rely on)."""
     out: Index = 0
+    r.nflips = 0
     e: Index
     rec: Index
     k: Index
@@ -83,6 +86,9 @@ def _lineage(r: Refiner, m: Mesh, top: Index, nb: Index) -> cython.bint:
             if top + 2 > r.lineage.shape[0]:
                 return False
             y = tw // 3
+            r.flips[r.nflips, 0] = rec
+            r.flips[r.nflips, 1] = y
+            r.nflips += 1
             r.lineage[top, 0] = lprev(tw)
             r.lineage[top, 1] = y
             r.lineage[top, 2] = (tw - 3 * y + 1) % 3
@@ -99,44 +105,30 @@ def _lineage(r: Refiner, m: Mesh, top: Index, nb: Index) -> cython.bint:
     return out == nb
 
 
-@cython.ccall
+@cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
-def rejected_fan_records(r: Refiner, m: Mesh, e: Index, nb: Index) -> cython.bint:
-    """``r.fan_rec[:nb]``: the records and orientations of the fan of a
-    point inside edge ``e``'s triangle (Triangle's located handle; the
-    cavity marked, the rim in order).  False if they cannot be told."""
+def _split_stack(r: Refiner, m: Mesh, e: Index, on_edge: cython.bint) -> Index:
+    """Lay Triangle's split of a point inside edge ``e``'s triangle (1 -> 3)
+    or on edge ``e`` (org o -> dest d: 2 -> 4, 1 -> 2 without a twin) on
+    ``r.lineage``, the first to flip on top; returns the stack's height."""
     t: Index = e // 3
-    # the split's three, first on top: e (org -> dest) keeps its record,
-    # dest -> apex and apex -> org get the new ones
-    r.lineage[0, 0] = lprev(e)
-    r.lineage[0, 1] = NEW_SECOND
-    r.lineage[0, 2] = 0
-    r.lineage[1, 0] = lnext(e)
-    r.lineage[1, 1] = NEW_FIRST
-    r.lineage[1, 2] = 0
-    r.lineage[2, 0] = e
-    r.lineage[2, 1] = t
-    r.lineage[2, 2] = e - 3 * t
-    return _lineage(r, m, 3, nb)
-
-
-@cython.ccall
-@cython.nogil
-@cython.exceptval(check=False)
-def revive_ghosts(r: Refiner, m: Mesh, e: Index, nb: Index) -> cython.void:
-    """The vertex about to be made splits subsegment edge ``e`` (org o ->
-    dest d; the cavity marked, the rim in order from d): revive the ghosts
-    waiting for it whose record and orientation its fan gives their
-    triangle again, and drop the others."""
-    g: Index = r.nghost - 1
-    if g < 0 or not ghost_pending(r, m, g):
-        return
+    if not on_edge:
+        # e (org -> dest) keeps its record, dest -> apex and apex -> org get
+        # the new ones
+        r.lineage[0, 0] = lprev(e)
+        r.lineage[0, 1] = NEW_SECOND
+        r.lineage[0, 2] = 0
+        r.lineage[1, 0] = lnext(e)
+        r.lineage[1, 1] = NEW_FIRST
+        r.lineage[1, 2] = 0
+        r.lineage[2, 0] = e
+        r.lineage[2, 1] = t
+        r.lineage[2, 2] = e - 3 * t
+        return 3
     tw: Index = m.twin[e]
-    h: Index = e // 3
     first: Index = FREED_LAST  # the new records, last freed first
     second: Index = NEW_FIRST + NEW_SECOND - FREED_LAST
-    # Triangle's 2 -> 4 split (1 -> 2 without a twin) from e, first on top:
     # d -> apex keeps e's record one orientation up, apex -> o and
     # o -> apex' get new ones, apex' -> d keeps the twin's two up
     top: Index = 0
@@ -152,9 +144,71 @@ def revive_ghosts(r: Refiner, m: Mesh, e: Index, nb: Index) -> cython.void:
     r.lineage[top, 1] = second if tw != NO_EDGE else first
     r.lineage[top, 2] = 0
     r.lineage[top + 1, 0] = lnext(e)
-    r.lineage[top + 1, 1] = h
-    r.lineage[top + 1, 2] = (e - 3 * h + 1) % 3
-    ok: cython.bint = _lineage(r, m, top + 2, nb)
+    r.lineage[top + 1, 1] = t
+    r.lineage[top + 1, 2] = (e - 3 * t + 1) % 3
+    return top + 2
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def rejected_fan_records(r: Refiner, m: Mesh, e: Index, nb: Index, on_edge: cython.bint) -> cython.bint:
+    """``r.fan_rec[:nb]``: the records and orientations of the fan of a
+    point inside edge ``e``'s triangle (Triangle's located handle) or on
+    edge ``e``, and ``r.flips`` its flips (the cavity marked, the rim in
+    order).  False if they cannot be told."""
+    return _lineage(r, m, _split_stack(r, m, e, on_edge), nb)
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def rejected_bounds(r: Refiner, m: Mesh, e: Index, on_edge: cython.bint) -> cython.void:
+    """The area bounds a rejected insertion leaves behind (after
+    ``rejected_fan_records`` told its flips): Triangle inserts the point,
+    flips, and undoes the flips before it rejects the point.  Each flip
+    gives both of its records the mean of their bounds (cavity.flip_bound);
+    an undo keeps both as they are, and puts every record back on its own
+    triangle.  So the triangles a rejected point's flips touched keep the
+    means, and with them a different verdict on being too large (found in
+    Triangle's -VVV "Area constraint" lines: face.1 refined under rpq30a
+    with a bound per triangle parted from Triangle at its 82nd split
+    without this, tests/engine/test_refine_existing.py).  The split's new
+    records are freed, their bounds with them."""
+    # the bounds of the split's new records: their triangles' own
+    fresh = cython.declare(cython.double[2])
+    fresh[0] = -1.0
+    fresh[1] = -1.0
+    top: Index = _split_stack(r, m, e, on_edge)
+    for k in range(top):
+        if r.lineage[k, 1] < 0:
+            fresh[NEW_FIRST - r.lineage[k, 1]] = m.area_bound[r.lineage[k, 0] // 3]
+    a: Index
+    b: Index
+    mean: cython.double
+    for i in range(r.nflips):
+        a = r.flips[i, 0]  # the fan triangle's record (maybe a new one)
+        b = r.flips[i, 1]  # the cavity triangle's, beyond it
+        mean = flip_bound(fresh[NEW_FIRST - a] if a < 0 else m.area_bound[a], m.area_bound[b])
+        if a < 0:
+            fresh[NEW_FIRST - a] = mean
+        else:
+            m.area_bound[a] = mean
+        m.area_bound[b] = mean
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def revive_ghosts(r: Refiner, m: Mesh, e: Index, nb: Index) -> cython.void:
+    """The vertex about to be made splits subsegment edge ``e`` (org o ->
+    dest d; the cavity marked, the rim in order from d): revive the ghosts
+    waiting for it whose record and orientation its fan gives their
+    triangle again, and drop the others."""
+    g: Index = r.nghost - 1
+    if g < 0 or not ghost_pending(r, m, g):
+        return
+    ok: cython.bint = _lineage(r, m, _split_stack(r, m, e, True), nb)
     live: cython.bint
     j: Index
     while g >= 0 and ghost_pending(r, m, g):

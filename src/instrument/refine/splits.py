@@ -61,7 +61,7 @@ from cython.cimports.instrument.refine.cavity import (
 from cython.cimports.instrument.refine.criteria import queue_rejected_fan, steiner_point, test_fan, test_triangle
 from cython.cimports.instrument.refine.deletion import chew_delete
 from cython.cimports.instrument.refine.encroach import check_subsegment, enc_edge, enc_free, enc_push, in_lens, may_split, queue_side
-from cython.cimports.instrument.refine.ghosts import rejected_fan_records, revive_ghosts
+from cython.cimports.instrument.refine.ghosts import rejected_bounds, rejected_fan_records, revive_ghosts
 from cython.cimports.instrument.refine.inplace import split_in_place, splits_cleanly
 from cython.cimports.instrument.refine.order import TRIANGLE
 from cython.cimports.instrument.refine.queues import ghost_room, ghost_slot, ghosts_orphaned, queue_clear, queue_compact, queue_pop, queue_push, queue_used
@@ -833,8 +833,13 @@ def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cyth
             encroached += 1
             queue_side(r, m, r.bnd[k, 4], True)
     if encroached:
-        if r.cfg.strategy == TRIANGLE and status == LOC_INSIDE and rejected_fan_records(r, m, e, nb):
-            queue_rejected_fan(r, m, segs, nb, px, py)  # Triangle queued them before it rejected the point
+        ghosts: cython.bint = r.cfg.strategy == TRIANGLE and status == LOC_INSIDE
+        bounds: cython.bint = m.area_bound.shape[0] > 0
+        if (ghosts or bounds) and rejected_fan_records(r, m, e, nb, status == LOC_ON_EDGE):
+            if ghosts:
+                queue_rejected_fan(r, m, segs, nb, px, py)  # Triangle queued them before it rejected the point
+            if bounds:
+                rejected_bounds(r, m, e, status == LOC_ON_EDGE)  # its flips' means stay
         forget_cavity(r, m, n)
         m.work[C_REJECTED] += 1
         m.work[C_UNDONE] += nb

@@ -26,10 +26,11 @@ makes the same triangulation another way:
    meets O(1) triangles in expectation (backward analysis), so the whole
    costs O(k) incircle tests for degree k.
 3. Ties. Where four or more vertices are cocircular the scan takes, of the
-   vertices on the emptiest circle, the first in chain order: it
-   triangulates each cocircular face as a fan from the face's last vertex.
-   Flipping every cocircular edge towards its quadrilateral's last vertex
-   reaches that fan (each flip raises the last vertex of one diagonal).
+   vertices on the emptiest circle, the last in chain order (as Triangle
+   does): it triangulates each cocircular face as a fan from the face's
+   first vertex.  Flipping every cocircular edge towards its
+   quadrilateral's first vertex reaches that fan (each flip lowers the
+   first vertex of one diagonal).
 4. Check, with the exact predicates: every triangle counter-clockwise and
    every inner edge locally Delaunay. Such a triangulation is the polygon's
    constrained Delaunay triangulation; the scan's, when it is a
@@ -313,7 +314,7 @@ def _settle(xy: cython.double[:, ::1], chain: cython.longlong[:], ntri: Index, t
             f = nb[e]
             if f < e or tie[e] == 0:
                 continue
-            if max(tv[e], tv[f]) > max(tv[lnext(e)], tv[lprev(e)]):
+            if min(tv[e], tv[f]) < min(tv[lnext(e)], tv[lprev(e)]):
                 _flip(tv, nb, tie, e, f)
                 flipped = True
     return True

@@ -72,6 +72,8 @@ cdef class Refiner:
     cdef public double[::1] carry    # the area bound each cavity triangle passes on (cavity.py)
     cdef public long long[:, ::1] lineage  # ghosts.py: the flips' stack (edge, record, orientation)
     cdef public long long[:, ::1] fan_rec  # ghosts.py: each fan triangle's record and orientation
+    cdef public long long[:, ::1] flips    # ghosts.py: the two records of each flip, in Triangle's order
+    cdef public Index nflips         # rows in use
     # the trace (empty: off)
     cdef public long long[:, ::1] trace  # rows: kind, created, deleted, walk steps, queue length
     cdef public Index ntrace

@@ -88,6 +88,7 @@ class Refiner:
         self.carry = np.empty(slots)
         self.lineage = np.empty((slots, 3), dtype=np.int64)
         self.fan_rec = np.empty((slots, 2), dtype=np.int64)
+        self.flips = np.empty((slots, 2), dtype=np.int64)
         self.trace = np.zeros((1024 if trace else 0, 5), dtype=np.int64)
         self.restart(cfg, budget)
 
@@ -115,6 +116,7 @@ class Refiner:
         self.log_length = 0
         self.compact_at = 0
         self.nghost = 0
+        self.nflips = 0
         self.enc_live = 0
         self.enc_fresh = 0
         self.enc_free = -1
