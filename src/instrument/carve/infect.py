@@ -70,31 +70,24 @@ def _first_hull_edge(m: Mesh) -> Index:
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
-def start_hull_edge(m: Mesh, vertex: Index) -> Index:
-    """The hull edge Triangle's outer-space handle holds after the first
-    triangulation, where its hull walk and its location of hole and region
-    points start; NO_EDGE without a hull.
+def start_hull_edge(m: Mesh) -> Index:
+    """The hull edge Triangle's outer-space handle holds, where its hull
+    walk and its location of hole and region points start: NO_EDGE without
+    a hull.  Only points strictly left of its line are located, so a hole
+    point on that edge's line is ignored.
 
-    After divide and conquer (``vertex`` -1) it is the edge leaving the
-    hull vertex with the least (x, y), counter-clockwise; after incremental
-    insertion the hull edge leaving ``vertex`` (the first one the removal
-    of the bounding triangle met: delaunay/incremental.py).  An edge flip or
-    split next to the boundary bonds another boundary edge to Triangle's
-    outer space, and the handle holds that one from then on
-    (``Mesh.hull_edge`` follows it through segment recovery).  Only points
-    strictly left of its line are located, so a hole point on that edge's
-    line is ignored."""
-    e: Index = m.hull_edge
+    The handle is ``Mesh.outer_space_edge``: each triangulator sets it
+    (delaunay/__init__.py says where), and the in-place flips and splits of
+    segment recovery move it as Triangle's bonds to outer space do.  The
+    scan for the edge leaving the least (x, y) hull vertex (Triangle's
+    handle after divide and conquer) stands in only where no handle is
+    known: a mesh read back from triangles (``-r``), which no triangulator
+    built, and a handle left on an edge no longer on the hull by the
+    rewrites that do not follow it (the plain flips and splits of
+    near-degenerate segment recovery, which Triangle does not make)."""
+    e: Index = m.outer_space_edge
     if e >= 0 and m.stamp[e // 3] > 0 and m.twin[e] == NO_EDGE:
         return e
-    if vertex >= 0:
-        for t in range(m.nslot):
-            if m.stamp[t] <= 0:
-                continue
-            for k in range(3):
-                e = 3 * t + k
-                if m.twin[e] == NO_EDGE and m.corner[lnext(e)] == vertex:
-                    return e
     return _first_hull_edge(m)
 
 

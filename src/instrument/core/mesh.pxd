@@ -43,8 +43,7 @@ cdef class Mesh:
     cdef public Index nlive           # live triangles (ghosts included)
     cdef public long long[::1] work        # the work counters (counters.py)
     cdef public long long rng              # the walks' random generator state
-    cdef public Index hull_edge            # the boundary edge Triangle's outer space was last bonded to (-1: unknown)
-    cdef public Index hull_start      # the vertex whose hull edge Triangle's outer-space handle holds, or -1
+    cdef public Index outer_space_edge     # the hull edge Triangle's outer-space handle holds (NO_EDGE: none known)
 
 
 cdef inline Index lnext(Index e) noexcept nogil:

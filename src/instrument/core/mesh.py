@@ -121,11 +121,11 @@ class Mesh:
         self.nlive = 0
         self.work = new_work() if work is None else work
         self.rng = 12345
-        self.hull_edge = -1
-        # Triangle's outer-space handle after the first triangulation: the
-        # hull edge leaving this vertex (incremental insertion sets it), or
-        # -1: the edge leaving the least (x, y) vertex (divide and conquer)
-        self.hull_start = -1
+        # the hull edge Triangle's outer-space handle holds: each
+        # triangulator sets it, and the in-place flips and splits move it
+        # as Triangle's bonds to outer space do (carve/infect.py's
+        # start_hull_edge reads it)
+        self.outer_space_edge = NO_EDGE
 
     def partner(self) -> Mesh:
         """A mesh over the same tables with counts and work of its own, for a
@@ -145,8 +145,7 @@ class Mesh:
         other.nlive = 0
         other.work = new_work()
         other.rng = self.rng
-        other.hull_edge = -1
-        other.hull_start = -1
+        other.outer_space_edge = NO_EDGE
         return other
 
     # ------------------------------------------------------------ capacity
@@ -312,7 +311,10 @@ def remove_ghosts_around_hull(m: Mesh) -> Index:
                 break
     if start < 0:
         return 0
-    m.hull_edge = m.twin[start]  # the hull edge leaving the least vertex: where Triangle's outer space points
+    # the hull edge leaving the least vertex: where Triangle's outer space
+    # points (none when every point is collinear: the ghosts face each other)
+    outer: Index = m.twin[start]
+    m.outer_space_edge = outer if outer != NO_EDGE and not is_ghost(m, outer // 3) else NO_EDGE
     hull: Index = 0
     h = start
     nxt: Index

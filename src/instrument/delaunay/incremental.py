@@ -45,7 +45,7 @@ v[k]; ours stores corners (v1, v2, v0) (the output order), so handle
   walk around the box corners, from the dummy handle's record (freed
   last); the first hull edge that walk meets becomes the outer-space
   handle, the edge Triangle starts its hull walks and its hole location
-  from (``triangulate`` returns its origin).
+  from (``triangulate`` sets it as ``Mesh.outer_space_edge``).
 
 The tests are the exact predicates, where Triangle's adaptive ones agree
 with them (docs/fidelity.md names the ties where they do not).  The work
@@ -561,15 +561,15 @@ def box_corners(xy) -> np.ndarray:
     ])  # fmt: skip
 
 
-def triangulate(m: Mesh, box) -> tuple[np.ndarray, int]:
+def triangulate(m: Mesh, box) -> np.ndarray:
     """Triangulate the first ``m.nvert`` vertices of ``m`` (whose rows must
     leave room for three more: the bounding triangle's corners ``box``), in
     input order.
 
-    Returns ``(dup, start)``: per vertex -1 or the inserted vertex it
-    duplicates, and the origin of the first hull edge the removal of the
-    box met, Triangle's outer-space handle afterwards (-1: no hull, every
-    point collinear, no triangle).  The box records are freed in
+    Returns ``dup``: per vertex -1 or the inserted vertex it duplicates.
+    ``m.outer_space_edge`` becomes the first hull edge the removal of the
+    box met, Triangle's outer-space handle afterwards (NO_EDGE: no hull,
+    every point collinear, no triangle).  The box records are freed in
     Triangle's order; ``m.nvert`` is unchanged."""
     n: Index = m.nvert
     xy = np.asarray(m.xy)
@@ -590,4 +590,5 @@ def triangulate(m: Mesh, box) -> tuple[np.ndarray, int]:
         _insert_all(m, n, st, d)
         _remove_box(m, n, st, hull)
     xy[n : n + 3] = 0.0
-    return dup, (int(m.corner[lnext(hull_a[1])]) if hull_a[0] > 0 else -1)
+    m.outer_space_edge = hull_a[1] if hull_a[0] > 0 else NO_EDGE
+    return dup
