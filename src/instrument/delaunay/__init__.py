@@ -42,7 +42,6 @@ def delaunay(
     work: np.ndarray,
     *,
     method: str = "divconq",
-    seed: int = 0,
     extra_vertices: int = 0,
     extra_triangles: int = 0,
     threads: int = 1,
@@ -58,8 +57,8 @@ def delaunay(
     and region points start (divide and conquer: the edge leaving the
     least (x, y) vertex; incremental insertion: the first hull edge the
     removal of the bounding triangle met; NO_EDGE without a hull).
-    ``method`` is one of ``METHODS``; ``seed`` is not used (neither method
-    is randomized: Triangle's incremental method inserts in input order).
+    ``method`` is one of ``METHODS`` (neither is randomized, so there is
+    no seed: Triangle's incremental method inserts in input order).
     ``extra_vertices`` and ``extra_triangles`` reserve room for later
     stages; ``tables`` are ``Mesh``'s optional tables (``parents``,
     ``area_bounds``, ``attributes``, ``constraints``).  Divide and conquer
