@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import cython
 from cython.cimports.instrument.core.locate import LOC_INSIDE, LOC_ON_EDGE, LOC_ON_VERTEX, walk
-from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, Index, Mesh, kill_triangle, lnext, lprev
+from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, Index, Mesh, kill_triangle, least_hull_edge, lnext, lprev
 from cython.cimports.instrument.core.predicates import orient2d
 from cython.cimports.instrument.core.subsegments import Subsegments
 from cython.cimports.instrument.counters import C_DELETED
@@ -41,32 +41,6 @@ def _boundary_marks(m: Mesh, segs: Subsegments, e: Index, endpoints_always: cyth
             m.vmark[v] = 1
 
 
-@cython.cfunc
-@cython.nogil
-@cython.exceptval(check=False)
-def _first_hull_edge(m: Mesh) -> Index:
-    """The hull edge leaving the hull vertex with the least (x, y), or NO_EDGE."""
-    xy = m.xy
-    best: Index = NO_EDGE
-    e: Index
-    o: Index
-    b: Index
-    for t in range(m.nslot):
-        if m.stamp[t] <= 0:
-            continue
-        for k in range(3):
-            e = 3 * t + k
-            if m.twin[e] == NO_EDGE:
-                o = m.corner[lnext(e)]
-                if best == NO_EDGE:
-                    best = e
-                else:
-                    b = m.corner[lnext(best)]
-                    if xy[o, 0] < xy[b, 0] or (xy[o, 0] == xy[b, 0] and xy[o, 1] < xy[b, 1]):
-                        best = e
-    return best
-
-
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
@@ -88,7 +62,7 @@ def start_hull_edge(m: Mesh) -> Index:
     e: Index = m.outer_space_edge
     if e >= 0 and m.stamp[e // 3] > 0 and m.twin[e] == NO_EDGE:
         return e
-    return _first_hull_edge(m)
+    return least_hull_edge(m)
 
 
 @cython.ccall

@@ -131,6 +131,7 @@ cdef inline Index next_random(Mesh m) noexcept nogil:
 
 
 cpdef Index remove_ghosts(Mesh m) noexcept nogil
+cpdef Index least_hull_edge(Mesh m) noexcept nogil
 cpdef Index remove_ghosts_around_hull(Mesh m) noexcept nogil
 cpdef void relabel_corners(Mesh m, long long[::1] label) noexcept nogil
 cpdef void turn_corners(Mesh m, Index shift) noexcept nogil
