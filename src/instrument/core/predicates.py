@@ -154,6 +154,9 @@ _O_HIGH = cython.declare(cython.int, 500)
 _I_LOW = cython.declare(cython.int, -216)
 _I_HIGH = cython.declare(cython.int, 250)
 # Status codes of _choose_scale.
+# which predicate ``_adaptive`` computes: its degree in the coordinates
+_ORIENT2D = cython.declare(cython.int, 2)
+_INCIRCLE = cython.declare(cython.int, 4)
 _OK = cython.declare(cython.int, 0)
 _ALLZERO = cython.declare(cython.int, 1)
 _WIDE = cython.declare(cython.int, 2)
@@ -826,6 +829,58 @@ def _incircle_wide(
 
 
 # ---------------------------------------------------------------------------
+# Past the filter: the range check and the ways on from it
+# ---------------------------------------------------------------------------
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _adaptive(c: cython.p_double, degree: cython.int) -> cython.double:
+    """orient2d (``degree`` ``_ORIENT2D``, 2: the points a, b, c in
+    ``c[0:6]``) or incircle (``_INCIRCLE``, 4: a, b, c, d in ``c[0:8]``)
+    where the inlined filter could not decide.  One range check decides the
+    way on for both (see the module docstring): coordinates in the exact
+    stages' safe range go to them as they are; a range an exact power of
+    two 2^k brings into it is scaled in place, and the value scaled back by
+    2^(-degree k); a range too wide for that goes to stage A with an
+    unbounded exponent, then, if still undecided, to Python integers; an
+    infinite or NaN coordinate gets the plain determinant."""
+    orient: cython.bint = degree == _ORIENT2D
+    n: cython.int = 6 if orient else 8
+    status: cython.int
+    k: cython.int
+    status, k = _choose_scale(c, n, _O_LOW if orient else _I_LOW, _O_HIGH if orient else _I_HIGH)
+    if status == _ALLZERO:
+        return 0.0
+    if status == _NONFINITE:
+        if orient:
+            return orient2d_fast(c[0], c[1], c[2], c[3], c[4], c[5])
+        return incircle_fast(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7])
+    ok: cython.bint
+    v: cython.double
+    if status == _WIDE:
+        if orient:
+            ok, v = _orient2d_wide(c[0], c[1], c[2], c[3], c[4], c[5])
+        else:
+            ok, v = _incircle_wide(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7])
+        if ok:
+            return v
+        with cython.gil:
+            if orient:
+                return _orient2d_integer(c[0], c[1], c[2], c[3], c[4], c[5])
+            return _incircle_integer(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7])
+    s: cython.double
+    if k != 0:
+        s = ldexp(1.0, k)
+        for i in range(n):
+            c[i] = c[i] * s
+    if orient:
+        v = _orient2d_exact(c[0], c[1], c[2], c[3], c[4], c[5])
+    else:
+        v = _incircle_exact(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7])
+    return v if k == 0 else _unscale(v, -degree * k)
+
+
+# ---------------------------------------------------------------------------
 # orient2d
 # ---------------------------------------------------------------------------
 @cython.ccall
@@ -845,7 +900,7 @@ def orient2d_fast(
 def orient2d_adaptive(
     ax: cython.double, ay: cython.double, bx: cython.double, by: cython.double, cx: cython.double, cy: cython.double
 ) -> cython.double:
-    """orient2d when the inlined filter could not decide: range check, then exact."""
+    """orient2d when the inlined filter could not decide (``_adaptive``)."""
     coords = cython.declare(cython.double[6])
     coords[0] = ax
     coords[1] = ay
@@ -853,26 +908,7 @@ def orient2d_adaptive(
     coords[3] = by
     coords[4] = cx
     coords[5] = cy
-    status: cython.int
-    k: cython.int
-    status, k = _choose_scale(coords, 6, _O_LOW, _O_HIGH)
-    if status == _ALLZERO:
-        return 0.0
-    if status == _NONFINITE:
-        return orient2d_fast(ax, ay, bx, by, cx, cy)
-    ok: cython.bint
-    v: cython.double
-    if status == _WIDE:
-        ok, v = _orient2d_wide(ax, ay, bx, by, cx, cy)
-        if ok:
-            return v
-        with cython.gil:
-            return _orient2d_integer(ax, ay, bx, by, cx, cy)
-    if k == 0:
-        return _orient2d_exact(ax, ay, bx, by, cx, cy)
-    s: cython.double = ldexp(1.0, k)
-    v = _orient2d_exact(ax * s, ay * s, bx * s, by * s, cx * s, cy * s)
-    return _unscale(v, -2 * k)
+    return _adaptive(coords, _ORIENT2D)
 
 
 @cython.cfunc
@@ -990,7 +1026,7 @@ def incircle_adaptive(
     ax: cython.double, ay: cython.double, bx: cython.double, by: cython.double,
     cx: cython.double, cy: cython.double, dx: cython.double, dy: cython.double,
 ) -> cython.double:
-    """incircle when the inlined filter could not decide: range check, then exact."""
+    """incircle when the inlined filter could not decide (``_adaptive``)."""
     coords = cython.declare(cython.double[8])
     coords[0] = ax
     coords[1] = ay
@@ -1000,26 +1036,7 @@ def incircle_adaptive(
     coords[5] = cy
     coords[6] = dx
     coords[7] = dy
-    status: cython.int
-    k: cython.int
-    status, k = _choose_scale(coords, 8, _I_LOW, _I_HIGH)
-    if status == _ALLZERO:
-        return 0.0
-    if status == _NONFINITE:
-        return incircle_fast(ax, ay, bx, by, cx, cy, dx, dy)
-    ok: cython.bint
-    v: cython.double
-    if status == _WIDE:
-        ok, v = _incircle_wide(ax, ay, bx, by, cx, cy, dx, dy)
-        if ok:
-            return v
-        with cython.gil:
-            return _incircle_integer(ax, ay, bx, by, cx, cy, dx, dy)
-    if k == 0:
-        return _incircle_exact(ax, ay, bx, by, cx, cy, dx, dy)
-    s: cython.double = ldexp(1.0, k)
-    v = _incircle_exact(ax * s, ay * s, bx * s, by * s, cx * s, cy * s, dx * s, dy * s)
-    return _unscale(v, -4 * k)
+    return _adaptive(coords, _INCIRCLE)
 
 
 @cython.cfunc
