@@ -258,6 +258,24 @@ def _square(a: cython.double) -> tuple[cython.double, cython.double]:
 @cython.inline
 @cython.nogil
 @cython.exceptval(check=False)
+def _store_four(
+    x0: cython.double, x1: cython.double, j: cython.double, i: cython.double, h: cython.p_double, ho: cython.int
+) -> cython.void:
+    """The last step of both Two_Two_Sum and Two_Two_Diff: h[ho:ho + 4] =
+    x0, x1 and the two components of j + i (smallest first)."""
+    x3: cython.double
+    x2: cython.double
+    x3, x2 = _two_sum(j, i)
+    h[ho] = x0
+    h[ho + 1] = x1
+    h[ho + 2] = x2
+    h[ho + 3] = x3
+
+
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
 def _store_two_two_sum(
     a1: cython.double, a0: cython.double, b1: cython.double, b0: cython.double, h: cython.p_double, ho: cython.int
 ) -> cython.void:
@@ -270,13 +288,7 @@ def _store_two_two_sum(
     i, x0 = _two_sum(a0, b0)
     j, r0 = _two_sum(a1, i)
     i, x1 = _two_sum(r0, b1)
-    x3: cython.double
-    x2: cython.double
-    x3, x2 = _two_sum(j, i)
-    h[ho] = x0
-    h[ho + 1] = x1
-    h[ho + 2] = x2
-    h[ho + 3] = x3
+    _store_four(x0, x1, j, i, h, ho)
 
 
 @cython.cfunc
@@ -294,13 +306,7 @@ def _store_two_two_diff(
     j, r0 = _two_sum(a1, i)
     i = r0 - b1
     x1: cython.double = _two_diff_tail(r0, b1, i)
-    x3: cython.double
-    x2: cython.double
-    x3, x2 = _two_sum(j, i)
-    h[ho] = x0
-    h[ho + 1] = x1
-    h[ho + 2] = x2
-    h[ho + 3] = x3
+    _store_four(x0, x1, j, i, h, ho)
 
 
 @cython.cfunc
