@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import cython
 from cython.cimports.instrument.core.locate import LOC_INSIDE, LOC_ON_EDGE, LOC_ON_VERTEX, walk
-from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, Index, Mesh, kill_triangle, least_hull_edge, lnext, lprev
+from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, Index, Mesh, kill_triangle, least_hull_edge, lnext, lprev, next_hull_edge
 from cython.cimports.instrument.core.predicates import orient2d
 from cython.cimports.instrument.core.subsegments import Subsegments
 from cython.cimports.instrument.counters import C_DELETED
@@ -90,10 +90,7 @@ def infect_hull(m: Mesh, segs: Subsegments, queue: cython.longlong[::1], start: 
                 n += 1
             else:
                 _boundary_marks(m, segs, e, False)
-        # the next hull edge leaves this one's destination
-        f = lnext(e)
-        while m.twin[f] != NO_EDGE:
-            f = lnext(m.twin[f])
+        f = next_hull_edge(m, e)
         e = f if f != e0 else NO_EDGE
     return n
 

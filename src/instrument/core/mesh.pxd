@@ -66,6 +66,15 @@ cdef inline Index apex(Mesh m, Index e) noexcept nogil:
     return m.corner[e]
 
 
+cdef inline Index next_hull_edge(Mesh m, Index e) noexcept nogil:
+    # the hull edge after hull edge e counter-clockwise (in a mesh without
+    # ghosts): it leaves e's destination, found by turning around that vertex
+    cdef Index f = lnext(e)
+    while m.twin[f] != NO_EDGE:
+        f = lnext(m.twin[f])
+    return f
+
+
 cdef inline bint is_ghost(Mesh m, Index t) noexcept nogil:
     return m.corner[3 * t] == GHOST or m.corner[3 * t + 1] == GHOST or m.corner[3 * t + 2] == GHOST
 

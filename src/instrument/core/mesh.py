@@ -495,6 +495,14 @@ if not cython.compiled:
     def apex(m, e):
         return m.corner[e]
 
+    def next_hull_edge(m, e):
+        """The hull edge after hull edge ``e`` counter-clockwise (no ghosts):
+        it leaves ``e``'s destination, found by turning around that vertex."""
+        f = lnext(e)
+        while m.twin[f] != NO_EDGE:
+            f = lnext(m.twin[f])
+        return f
+
     def is_ghost(m, t):
         return m.corner[3 * t] == GHOST or m.corner[3 * t + 1] == GHOST or m.corner[3 * t + 2] == GHOST
 
