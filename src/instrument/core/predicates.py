@@ -736,6 +736,19 @@ def _orient2d_wide(
 
 
 @cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _translated(
+    ax: cython.double, ay: cython.double, bx: cython.double, by: cython.double,
+    cx: cython.double, cy: cython.double, dx: cython.double, dy: cython.double,
+) -> tuple[cython.double, cython.double, cython.double, cython.double, cython.double, cython.double]:
+    """a, b and c less d, rounded, as every stage of incircle starts
+    (Triangle's adx, bdx, cdx, ady, bdy, cdy, in that order)."""
+    return ax - dx, bx - dx, cx - dx, ay - dy, by - dy, cy - dy
+
+
+@cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
 def _incircle_wide_at(
@@ -748,12 +761,13 @@ def _incircle_wide_at(
     determinant saturated to the double range) if its sign is certain;
     (False, 0) when a rounded difference overflows or the sign is not
     certain."""
-    adx: cython.double = ax - dx
-    bdx: cython.double = bx - dx
-    cdx: cython.double = cx - dx
-    ady: cython.double = ay - dy
-    bdy: cython.double = by - dy
-    cdy: cython.double = cy - dy
+    adx: cython.double
+    bdx: cython.double
+    cdx: cython.double
+    ady: cython.double
+    bdy: cython.double
+    cdy: cython.double
+    adx, bdx, cdx, ady, bdy, cdy = _translated(ax, ay, bx, by, cx, cy, dx, dy)
     if not (fabs(adx) <= _DBL_MAX and fabs(bdx) <= _DBL_MAX and fabs(cdx) <= _DBL_MAX
             and fabs(ady) <= _DBL_MAX and fabs(bdy) <= _DBL_MAX and fabs(cdy) <= _DBL_MAX):
         return False, 0.0
@@ -1013,12 +1027,13 @@ def incircle_fast(
 ) -> cython.double:
     """Plain floating-point incircle (Triangle's ``-X``); sign not guaranteed:
     Triangle's stage-0 determinant."""
-    adx: cython.double = ax - dx
-    bdx: cython.double = bx - dx
-    cdx: cython.double = cx - dx
-    ady: cython.double = ay - dy
-    bdy: cython.double = by - dy
-    cdy: cython.double = cy - dy
+    adx: cython.double
+    bdx: cython.double
+    cdx: cython.double
+    ady: cython.double
+    bdy: cython.double
+    cdy: cython.double
+    adx, bdx, cdx, ady, bdy, cdy = _translated(ax, ay, bx, by, cx, cy, dx, dy)
     alift: cython.double = adx * adx + ady * ady
     blift: cython.double = bdx * bdx + bdy * bdy
     clift: cython.double = cdx * cdx + cdy * cdy
@@ -1053,12 +1068,13 @@ def _incircle_exact(
     cx: cython.double, cy: cython.double, dx: cython.double, dy: cython.double,
 ) -> cython.double:
     """Triangle's complete incircle (stage 0, A, then adapt); inputs in safe range."""
-    adx: cython.double = ax - dx
-    bdx: cython.double = bx - dx
-    cdx: cython.double = cx - dx
-    ady: cython.double = ay - dy
-    bdy: cython.double = by - dy
-    cdy: cython.double = cy - dy
+    adx: cython.double
+    bdx: cython.double
+    cdx: cython.double
+    ady: cython.double
+    bdy: cython.double
+    cdy: cython.double
+    adx, bdx, cdx, ady, bdy, cdy = _translated(ax, ay, bx, by, cx, cy, dx, dy)
     bdxcdy: cython.double = bdx * cdy
     cdxbdy: cython.double = cdx * bdy
     alift: cython.double = adx * adx + ady * ady
@@ -1126,12 +1142,13 @@ def _incircle_adapt(
     cx: cython.double, cy: cython.double, dx: cython.double, dy: cython.double, permanent: cython.double,
 ) -> cython.double:
     """Stages B, C, D of incircle (Shewchuk's incircleadapt)."""
-    adx: cython.double = ax - dx
-    bdx: cython.double = bx - dx
-    cdx: cython.double = cx - dx
-    ady: cython.double = ay - dy
-    bdy: cython.double = by - dy
-    cdy: cython.double = cy - dy
+    adx: cython.double
+    bdx: cython.double
+    cdx: cython.double
+    ady: cython.double
+    bdy: cython.double
+    cdy: cython.double
+    adx, bdx, cdx, ady, bdy, cdy = _translated(ax, ay, bx, by, cx, cy, dx, dy)
     w = cython.declare(cython.double[316])
     finlen: cython.int = _incircle_expansion_b(adx, bdx, cdx, ady, bdy, cdy, w)
     det: cython.double = _estimate(finlen, w, 220)
