@@ -101,7 +101,7 @@ def triangulate(
 
         ms, inp, attrs = reconstruct(tri, inp, o, work, seed)
     else:
-        ms = mesh_input(inp, o, work, seed, threads=threads, room=refine.starting_room(inp["vertices"].shape[0], o))
+        ms = mesh_input(inp, o, work, threads=threads, room=refine.starting_room(inp["vertices"].shape[0], o))
     refining = o.quality and ms.mesh.nlive > 0
     if refining and o.r:
         from .reconstruct import make_delaunay
@@ -188,7 +188,7 @@ def validate(tri: dict, o: Options) -> dict:
     return out
 
 
-def mesh_input(inp: dict, o: Options, work: np.ndarray, seed: int = 0, threads: int = 1, room: int = 16) -> MeshState:
+def mesh_input(inp: dict, o: Options, work: np.ndarray, threads: int = 1, room: int = 16) -> MeshState:
     """The (constrained) Delaunay triangulation of the validated input
     ``inp`` under ``o``, carved, with the hull as segments where refinement
     needs them: everything ``triangulate`` does before refining.  ``room``
@@ -200,7 +200,7 @@ def mesh_input(inp: dict, o: Options, work: np.ndarray, seed: int = 0, threads: 
     spare = room
     method = "incremental" if o.i else "vertical" if o.l else "divconq"  # -F: no sweepline; divide and conquer
     m, dup = delaunay(
-        xy, work, method=method, seed=seed, extra_vertices=spare, extra_triangles=2 * spare,
+        xy, work, method=method, extra_vertices=spare, extra_triangles=2 * spare,
         parents="vertex_attributes" in inp, constraints=False, threads=threads,
     )
     np.asarray(m.vmark)[: xy.shape[0]] = inp["vertex_markers"]

@@ -182,7 +182,7 @@ def replay(
     tri = quadratic.example(n, alpha_deg)
     inp = validate(tri, o)
     work = counters.new_work()
-    ms = mesh_input(inp, o, work, seed)
+    ms = mesh_input(inp, o, work)
     if ms.n_vertices != n + 12 or int(work[counters.C_STEINER]):
         raise ReplayError("the extended input did not triangulate to its own n + 12 vertices")
 

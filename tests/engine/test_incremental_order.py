@@ -115,7 +115,8 @@ def test_outer_space_handle_is_where_c_starts():
     sets = [p for p in sets if np.linalg.matrix_rank(p[1:] - p[0]) == 2]
     for pts, t in zip(sets, triangle_runs([(p, "icQ") for p in sets])):
         m, _ = delaunay(pts, new_work(), method="incremental")
-        start = m.hull_start
+        e = m.outer_space_edge
+        start = int(m.corner[3 * (e // 3) + (e + 1) % 3])  # its origin
         corner = np.asarray(m.corner)[: 3 * m.nslot].reshape(-1, 3)
         twin = np.asarray(m.twin)[: 3 * m.nslot].reshape(-1, 3)
         alive = np.asarray(m.stamp)[: m.nslot] > 0

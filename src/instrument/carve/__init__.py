@@ -20,7 +20,7 @@ def carve(ms: MeshState, o: Options, holes: np.ndarray | None, regions: np.ndarr
     slots = m.triangle_capacity
     has_regions = regions is not None and len(regions) > 0
     has_holes = holes is not None and len(holes) > 0 and not o.O
-    start = start_hull_edge(m, m.hull_start)  # hole and region points must lie strictly left of its line
+    start = start_hull_edge(m)  # hole and region points must lie strictly left of its line
     if has_regions or has_holes:  # the input's bounding box, for locating their points
         # column by column: numpy's reduction along axis 0 of an (n, 2) array is
         # about fifty times slower (6 ms at 10^5 vertices)

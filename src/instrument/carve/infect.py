@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import cython
 from cython.cimports.instrument.core.locate import LOC_INSIDE, LOC_ON_EDGE, LOC_ON_VERTEX, walk
-from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, Index, Mesh, kill_triangle, lnext, lprev
+from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, Index, Mesh, kill_triangle, least_hull_edge, lnext, lprev, next_hull_edge
 from cython.cimports.instrument.core.predicates import orient2d
 from cython.cimports.instrument.core.subsegments import Subsegments
 from cython.cimports.instrument.counters import C_DELETED
@@ -41,61 +41,28 @@ def _boundary_marks(m: Mesh, segs: Subsegments, e: Index, endpoints_always: cyth
             m.vmark[v] = 1
 
 
-@cython.cfunc
-@cython.nogil
-@cython.exceptval(check=False)
-def _first_hull_edge(m: Mesh) -> Index:
-    """The hull edge leaving the hull vertex with the least (x, y), or NO_EDGE."""
-    xy = m.xy
-    best: Index = NO_EDGE
-    e: Index
-    o: Index
-    b: Index
-    for t in range(m.nslot):
-        if m.stamp[t] <= 0:
-            continue
-        for k in range(3):
-            e = 3 * t + k
-            if m.twin[e] == NO_EDGE:
-                o = m.corner[lnext(e)]
-                if best == NO_EDGE:
-                    best = e
-                else:
-                    b = m.corner[lnext(best)]
-                    if xy[o, 0] < xy[b, 0] or (xy[o, 0] == xy[b, 0] and xy[o, 1] < xy[b, 1]):
-                        best = e
-    return best
-
-
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
-def start_hull_edge(m: Mesh, vertex: Index) -> Index:
-    """The hull edge Triangle's outer-space handle holds after the first
-    triangulation, where its hull walk and its location of hole and region
-    points start; NO_EDGE without a hull.
+def start_hull_edge(m: Mesh) -> Index:
+    """The hull edge Triangle's outer-space handle holds, where its hull
+    walk and its location of hole and region points start: NO_EDGE without
+    a hull.  Only points strictly left of its line are located, so a hole
+    point on that edge's line is ignored.
 
-    After divide and conquer (``vertex`` -1) it is the edge leaving the
-    hull vertex with the least (x, y), counter-clockwise; after incremental
-    insertion the hull edge leaving ``vertex`` (the first one the removal
-    of the bounding triangle met: delaunay/incremental.py).  An edge flip or
-    split next to the boundary bonds another boundary edge to Triangle's
-    outer space, and the handle holds that one from then on
-    (``Mesh.hull_edge`` follows it through segment recovery).  Only points
-    strictly left of its line are located, so a hole point on that edge's
-    line is ignored."""
-    e: Index = m.hull_edge
+    The handle is ``Mesh.outer_space_edge``: each triangulator sets it
+    (delaunay/__init__.py says where), and the in-place flips and splits of
+    segment recovery move it as Triangle's bonds to outer space do.  The
+    scan for the edge leaving the least (x, y) hull vertex (Triangle's
+    handle after divide and conquer) stands in only where no handle is
+    known: a mesh read back from triangles (``-r``), which no triangulator
+    built, and a handle left on an edge no longer on the hull by the
+    rewrites that do not follow it (the plain flips and splits of
+    near-degenerate segment recovery, which Triangle does not make)."""
+    e: Index = m.outer_space_edge
     if e >= 0 and m.stamp[e // 3] > 0 and m.twin[e] == NO_EDGE:
         return e
-    if vertex >= 0:
-        for t in range(m.nslot):
-            if m.stamp[t] <= 0:
-                continue
-            for k in range(3):
-                e = 3 * t + k
-                if m.twin[e] == NO_EDGE and m.corner[lnext(e)] == vertex:
-                    return e
-    return _first_hull_edge(m)
+    return least_hull_edge(m)
 
 
 @cython.ccall
@@ -123,10 +90,7 @@ def infect_hull(m: Mesh, segs: Subsegments, queue: cython.longlong[::1], start: 
                 n += 1
             else:
                 _boundary_marks(m, segs, e, False)
-        # the next hull edge leaves this one's destination
-        f = lnext(e)
-        while m.twin[f] != NO_EDGE:
-            f = lnext(m.twin[f])
+        f = next_hull_edge(m, e)
         e = f if f != e0 else NO_EDGE
     return n
 

@@ -12,7 +12,7 @@ per output here does the same copies in the same order.
 from __future__ import annotations
 
 import cython
-from cython.cimports.instrument.core.mesh import Index, Mesh, in_output
+from cython.cimports.instrument.core.mesh import Index, Mesh, dest, in_output, org
 
 
 @cython.ccall
@@ -85,12 +85,8 @@ def subsegment_rows(
     renumbered by ``new_id`` (Triangle lists a subsegment made on edge
     a -> b as b -> a), and ``marker[i]`` its record's marker."""
     e: Index
-    t: Index
-    k: Index
     for i in range(edges.shape[0]):
         e = edges[i]
-        t = e // 3
-        k = e - 3 * t
-        ends[i, 0] = new_id[m.corner[3 * t + (k + 2) % 3]]
-        ends[i, 1] = new_id[m.corner[3 * t + (k + 1) % 3]]
+        ends[i, 0] = new_id[dest(m, e)]
+        ends[i, 1] = new_id[org(m, e)]
         marker[i, 0] = record_marker[m.seg[e]]

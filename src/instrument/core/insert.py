@@ -212,7 +212,7 @@ def flip_in_place(m: Mesh, e: Index) -> cython.void:
     triangles each with the far vertex first.  Both slots' stamps move on
     (their triangles changed), the flip counts as ``flip`` counts it, and a
     side of the quadrilateral on the mesh's boundary becomes
-    ``Mesh.hull_edge`` (where Triangle's outer space points after its flip
+    ``Mesh.outer_space_edge`` (where Triangle's outer space points after its flip
     bonds that side to it).
     """
     tw: Index = m.twin[e]
@@ -256,13 +256,13 @@ def flip_in_place(m: Mesh, e: Index) -> cython.void:
         m.seg[t2] = s_bc
     # Triangle's outer space points at the last triangle bonded to it
     if n_ca == NO_EDGE:
-        m.hull_edge = e1
+        m.outer_space_edge = e1
     if n_ad == NO_EDGE:
-        m.hull_edge = e2
+        m.outer_space_edge = e2
     if n_db == NO_EDGE:
-        m.hull_edge = t1
+        m.outer_space_edge = t1
     if n_bc == NO_EDGE:
-        m.hull_edge = t2
+        m.outer_space_edge = t2
     m.stamp[e // 3] += 1
     m.stamp[tw // 3] += 1
     if not is_ghost(m, e // 3):
@@ -304,7 +304,7 @@ def split_edge_in_place(m: Mesh, h: Index, v: Index, half: cython.int, zero: Ind
     edge ``l -> b`` opposite ``v``, where Triangle's flips around ``v``
     start (``lawson_in_place``); -1 if no triangle could be taken (nothing
     changed).  A new triangle's side on the mesh's boundary becomes
-    ``Mesh.hull_edge``, as in ``flip_in_place``."""
+    ``Mesh.outer_space_edge``, as in ``flip_in_place``."""
     tw: Index = m.twin[h]
     need: Index = 2 if tw != NO_EDGE else 1
     if spare_triangles(m) < need:
@@ -356,11 +356,11 @@ def split_edge_in_place(m: Mesh, h: Index, v: Index, half: cython.int, zero: Ind
     m.work[C_CREATED] += 1
     # sides on the boundary, bonded to Triangle's outer space in this order
     if tw != NO_EDGE and m.twin[T + z0] == NO_EDGE:
-        m.hull_edge = T + z0
+        m.outer_space_edge = T + z0
     if n_br == NO_EDGE:
-        m.hull_edge = B + z0
+        m.outer_space_edge = B + z0
     if tw == NO_EDGE:
-        m.hull_edge = B + z1
+        m.outer_space_edge = B + z1
     return lnext(h)
 
 

@@ -43,8 +43,7 @@ cdef class Mesh:
     cdef public Index nlive           # live triangles (ghosts included)
     cdef public long long[::1] work        # the work counters (counters.py)
     cdef public long long rng              # the walks' random generator state
-    cdef public Index hull_edge            # the boundary edge Triangle's outer space was last bonded to (-1: unknown)
-    cdef public Index hull_start      # the vertex whose hull edge Triangle's outer-space handle holds, or -1
+    cdef public Index outer_space_edge     # the hull edge Triangle's outer-space handle holds (NO_EDGE: none known)
 
 
 cdef inline Index lnext(Index e) noexcept nogil:
@@ -65,6 +64,15 @@ cdef inline Index dest(Mesh m, Index e) noexcept nogil:
 
 cdef inline Index apex(Mesh m, Index e) noexcept nogil:
     return m.corner[e]
+
+
+cdef inline Index next_hull_edge(Mesh m, Index e) noexcept nogil:
+    # the hull edge after hull edge e counter-clockwise (in a mesh without
+    # ghosts): it leaves e's destination, found by turning around that vertex
+    cdef Index f = lnext(e)
+    while m.twin[f] != NO_EDGE:
+        f = lnext(m.twin[f])
+    return f
 
 
 cdef inline bint is_ghost(Mesh m, Index t) noexcept nogil:
@@ -132,6 +140,7 @@ cdef inline Index next_random(Mesh m) noexcept nogil:
 
 
 cpdef Index remove_ghosts(Mesh m) noexcept nogil
+cpdef Index least_hull_edge(Mesh m) noexcept nogil
 cpdef Index remove_ghosts_around_hull(Mesh m) noexcept nogil
 cpdef void relabel_corners(Mesh m, long long[::1] label) noexcept nogil
 cpdef void turn_corners(Mesh m, Index shift) noexcept nogil

@@ -121,11 +121,11 @@ class Mesh:
         self.nlive = 0
         self.work = new_work() if work is None else work
         self.rng = 12345
-        self.hull_edge = -1
-        # Triangle's outer-space handle after the first triangulation: the
-        # hull edge leaving this vertex (incremental insertion sets it), or
-        # -1: the edge leaving the least (x, y) vertex (divide and conquer)
-        self.hull_start = -1
+        # the hull edge Triangle's outer-space handle holds: each
+        # triangulator sets it, and the in-place flips and splits move it
+        # as Triangle's bonds to outer space do (carve/infect.py's
+        # start_hull_edge reads it)
+        self.outer_space_edge = NO_EDGE
 
     def partner(self) -> Mesh:
         """A mesh over the same tables with counts and work of its own, for a
@@ -145,8 +145,7 @@ class Mesh:
         other.nlive = 0
         other.work = new_work()
         other.rng = self.rng
-        other.hull_edge = -1
-        other.hull_start = -1
+        other.outer_space_edge = NO_EDGE
         return other
 
     # ------------------------------------------------------------ capacity
@@ -280,6 +279,45 @@ def remove_ghosts(m: Mesh) -> Index:
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
+def least_hull_edge(m: Mesh) -> Index:
+    """The hull edge leaving the hull vertex with the least (x, y), or
+    NO_EDGE without one: where Triangle's outer space points after divide
+    and conquer, so both the removal of its ghosts
+    (``remove_ghosts_around_hull``) and the search for that handle where
+    none is known (carve/infect.py's ``start_hull_edge``) start there.  A
+    hull edge is the twin of a ghost's edge opposite its ghost corner, or,
+    once the ghosts are gone, an edge without a twin; either way the scan
+    reads each slot's corners and twins in order.  Where every point is
+    collinear, the ghosts' edges face each other and the one found is a
+    ghost's."""
+    xy = m.xy
+    best: Index = NO_EDGE
+    best_v: Index = -1
+    e: Index
+    h: Index
+    v: Index
+    for t in range(m.nslot):
+        if m.stamp[t] <= 0:
+            continue
+        for k in range(3):
+            e = 3 * t + k
+            if m.corner[e] == GHOST:  # a ghost: its edge e runs against the hull edge
+                h = m.twin[e]
+                v = m.corner[lprev(e)]
+            elif m.twin[e] == NO_EDGE:
+                h = e
+                v = m.corner[lnext(e)]
+            else:
+                continue
+            if best_v < 0 or xy[v, 0] < xy[best_v, 0] or (xy[v, 0] == xy[best_v, 0] and xy[v, 1] < xy[best_v, 1]):
+                best = h
+                best_v = v
+    return best
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
 def remove_ghosts_around_hull(m: Mesh) -> Index:
     """``remove_ghosts`` in the order Triangle deletes its ghosts after
     divide and conquer: around the hull counter-clockwise, from the ghost
@@ -291,30 +329,15 @@ def remove_ghosts_around_hull(m: Mesh) -> Index:
     (opposite its ghost corner) runs against its hull edge, from the hull
     edge's head to its tail; the next ghost counter-clockwise holds
     ``lprev(twin[lprev(h)])``.  Returns the hull size."""
-    xy = m.xy
-    start: Index = -1
-    d: Index
-    b: Index
-    h: Index
-    for t in range(m.nslot):
-        if m.stamp[t] <= 0:
-            continue
-        for k in range(3):
-            if m.corner[3 * t + k] == GHOST:
-                h = 3 * t + k
-                d = m.corner[lprev(h)]
-                if start < 0:
-                    start = h
-                else:
-                    b = m.corner[lprev(start)]
-                    if xy[d, 0] < xy[b, 0] or (xy[d, 0] == xy[b, 0] and xy[d, 1] < xy[b, 1]):
-                        start = h
-                break
-    if start < 0:
-        return 0
-    m.hull_edge = m.twin[start]  # the hull edge leaving the least vertex: where Triangle's outer space points
+    outer: Index = least_hull_edge(m)
+    if outer == NO_EDGE:
+        return remove_ghosts(m)  # (no ghosts: nothing to remove)
+    start: Index = m.twin[outer]
+    # the hull edge leaving the least vertex is where Triangle's outer space
+    # points (none when every point is collinear: the ghosts face each other)
+    m.outer_space_edge = outer if not is_ghost(m, outer // 3) else NO_EDGE
     hull: Index = 0
-    h = start
+    h: Index = start
     nxt: Index
     tw: Index
     for _ in range(m.nslot):
@@ -471,6 +494,14 @@ if not cython.compiled:
 
     def apex(m, e):
         return m.corner[e]
+
+    def next_hull_edge(m, e):
+        """The hull edge after hull edge ``e`` counter-clockwise (no ghosts):
+        it leaves ``e``'s destination, found by turning around that vertex."""
+        f = lnext(e)
+        while m.twin[f] != NO_EDGE:
+            f = lnext(m.twin[f])
+        return f
 
     def is_ghost(m, t):
         return m.corner[3 * t] == GHOST or m.corner[3 * t + 1] == GHOST or m.corner[3 * t + 2] == GHOST

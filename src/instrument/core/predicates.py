@@ -154,6 +154,9 @@ _O_HIGH = cython.declare(cython.int, 500)
 _I_LOW = cython.declare(cython.int, -216)
 _I_HIGH = cython.declare(cython.int, 250)
 # Status codes of _choose_scale.
+# which predicate ``_adaptive`` computes: its degree in the coordinates
+_ORIENT2D = cython.declare(cython.int, 2)
+_INCIRCLE = cython.declare(cython.int, 4)
 _OK = cython.declare(cython.int, 0)
 _ALLZERO = cython.declare(cython.int, 1)
 _WIDE = cython.declare(cython.int, 2)
@@ -255,6 +258,24 @@ def _square(a: cython.double) -> tuple[cython.double, cython.double]:
 @cython.inline
 @cython.nogil
 @cython.exceptval(check=False)
+def _store_four(
+    x0: cython.double, x1: cython.double, j: cython.double, i: cython.double, h: cython.p_double, ho: cython.int
+) -> cython.void:
+    """The last step of both Two_Two_Sum and Two_Two_Diff: h[ho:ho + 4] =
+    x0, x1 and the two components of j + i (smallest first)."""
+    x3: cython.double
+    x2: cython.double
+    x3, x2 = _two_sum(j, i)
+    h[ho] = x0
+    h[ho + 1] = x1
+    h[ho + 2] = x2
+    h[ho + 3] = x3
+
+
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
 def _store_two_two_sum(
     a1: cython.double, a0: cython.double, b1: cython.double, b0: cython.double, h: cython.p_double, ho: cython.int
 ) -> cython.void:
@@ -267,13 +288,7 @@ def _store_two_two_sum(
     i, x0 = _two_sum(a0, b0)
     j, r0 = _two_sum(a1, i)
     i, x1 = _two_sum(r0, b1)
-    x3: cython.double
-    x2: cython.double
-    x3, x2 = _two_sum(j, i)
-    h[ho] = x0
-    h[ho + 1] = x1
-    h[ho + 2] = x2
-    h[ho + 3] = x3
+    _store_four(x0, x1, j, i, h, ho)
 
 
 @cython.cfunc
@@ -291,13 +306,7 @@ def _store_two_two_diff(
     j, r0 = _two_sum(a1, i)
     i = r0 - b1
     x1: cython.double = _two_diff_tail(r0, b1, i)
-    x3: cython.double
-    x2: cython.double
-    x3, x2 = _two_sum(j, i)
-    h[ho] = x0
-    h[ho + 1] = x1
-    h[ho + 2] = x2
-    h[ho + 3] = x3
+    _store_four(x0, x1, j, i, h, ho)
 
 
 @cython.cfunc
@@ -727,6 +736,19 @@ def _orient2d_wide(
 
 
 @cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _translated(
+    ax: cython.double, ay: cython.double, bx: cython.double, by: cython.double,
+    cx: cython.double, cy: cython.double, dx: cython.double, dy: cython.double,
+) -> tuple[cython.double, cython.double, cython.double, cython.double, cython.double, cython.double]:
+    """a, b and c less d, rounded, as every stage of incircle starts
+    (Triangle's adx, bdx, cdx, ady, bdy, cdy, in that order)."""
+    return ax - dx, bx - dx, cx - dx, ay - dy, by - dy, cy - dy
+
+
+@cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
 def _incircle_wide_at(
@@ -739,12 +761,13 @@ def _incircle_wide_at(
     determinant saturated to the double range) if its sign is certain;
     (False, 0) when a rounded difference overflows or the sign is not
     certain."""
-    adx: cython.double = ax - dx
-    bdx: cython.double = bx - dx
-    cdx: cython.double = cx - dx
-    ady: cython.double = ay - dy
-    bdy: cython.double = by - dy
-    cdy: cython.double = cy - dy
+    adx: cython.double
+    bdx: cython.double
+    cdx: cython.double
+    ady: cython.double
+    bdy: cython.double
+    cdy: cython.double
+    adx, bdx, cdx, ady, bdy, cdy = _translated(ax, ay, bx, by, cx, cy, dx, dy)
     if not (fabs(adx) <= _DBL_MAX and fabs(bdx) <= _DBL_MAX and fabs(cdx) <= _DBL_MAX
             and fabs(ady) <= _DBL_MAX and fabs(bdy) <= _DBL_MAX and fabs(cdy) <= _DBL_MAX):
         return False, 0.0
@@ -826,6 +849,58 @@ def _incircle_wide(
 
 
 # ---------------------------------------------------------------------------
+# Past the filter: the range check and the ways on from it
+# ---------------------------------------------------------------------------
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _adaptive(c: cython.p_double, degree: cython.int) -> cython.double:
+    """orient2d (``degree`` ``_ORIENT2D``, 2: the points a, b, c in
+    ``c[0:6]``) or incircle (``_INCIRCLE``, 4: a, b, c, d in ``c[0:8]``)
+    where the inlined filter could not decide.  One range check decides the
+    way on for both (see the module docstring): coordinates in the exact
+    stages' safe range go to them as they are; a range an exact power of
+    two 2^k brings into it is scaled in place, and the value scaled back by
+    2^(-degree k); a range too wide for that goes to stage A with an
+    unbounded exponent, then, if still undecided, to Python integers; an
+    infinite or NaN coordinate gets the plain determinant."""
+    orient: cython.bint = degree == _ORIENT2D
+    n: cython.int = 6 if orient else 8
+    status: cython.int
+    k: cython.int
+    status, k = _choose_scale(c, n, _O_LOW if orient else _I_LOW, _O_HIGH if orient else _I_HIGH)
+    if status == _ALLZERO:
+        return 0.0
+    if status == _NONFINITE:
+        if orient:
+            return orient2d_fast(c[0], c[1], c[2], c[3], c[4], c[5])
+        return incircle_fast(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7])
+    ok: cython.bint
+    v: cython.double
+    if status == _WIDE:
+        if orient:
+            ok, v = _orient2d_wide(c[0], c[1], c[2], c[3], c[4], c[5])
+        else:
+            ok, v = _incircle_wide(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7])
+        if ok:
+            return v
+        with cython.gil:
+            if orient:
+                return _orient2d_integer(c[0], c[1], c[2], c[3], c[4], c[5])
+            return _incircle_integer(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7])
+    s: cython.double
+    if k != 0:
+        s = ldexp(1.0, k)
+        for i in range(n):
+            c[i] = c[i] * s
+    if orient:
+        v = _orient2d_exact(c[0], c[1], c[2], c[3], c[4], c[5])
+    else:
+        v = _incircle_exact(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7])
+    return v if k == 0 else _unscale(v, -degree * k)
+
+
+# ---------------------------------------------------------------------------
 # orient2d
 # ---------------------------------------------------------------------------
 @cython.ccall
@@ -845,7 +920,7 @@ def orient2d_fast(
 def orient2d_adaptive(
     ax: cython.double, ay: cython.double, bx: cython.double, by: cython.double, cx: cython.double, cy: cython.double
 ) -> cython.double:
-    """orient2d when the inlined filter could not decide: range check, then exact."""
+    """orient2d when the inlined filter could not decide (``_adaptive``)."""
     coords = cython.declare(cython.double[6])
     coords[0] = ax
     coords[1] = ay
@@ -853,26 +928,7 @@ def orient2d_adaptive(
     coords[3] = by
     coords[4] = cx
     coords[5] = cy
-    status: cython.int
-    k: cython.int
-    status, k = _choose_scale(coords, 6, _O_LOW, _O_HIGH)
-    if status == _ALLZERO:
-        return 0.0
-    if status == _NONFINITE:
-        return orient2d_fast(ax, ay, bx, by, cx, cy)
-    ok: cython.bint
-    v: cython.double
-    if status == _WIDE:
-        ok, v = _orient2d_wide(ax, ay, bx, by, cx, cy)
-        if ok:
-            return v
-        with cython.gil:
-            return _orient2d_integer(ax, ay, bx, by, cx, cy)
-    if k == 0:
-        return _orient2d_exact(ax, ay, bx, by, cx, cy)
-    s: cython.double = ldexp(1.0, k)
-    v = _orient2d_exact(ax * s, ay * s, bx * s, by * s, cx * s, cy * s)
-    return _unscale(v, -2 * k)
+    return _adaptive(coords, _ORIENT2D)
 
 
 @cython.cfunc
@@ -971,12 +1027,13 @@ def incircle_fast(
 ) -> cython.double:
     """Plain floating-point incircle (Triangle's ``-X``); sign not guaranteed:
     Triangle's stage-0 determinant."""
-    adx: cython.double = ax - dx
-    bdx: cython.double = bx - dx
-    cdx: cython.double = cx - dx
-    ady: cython.double = ay - dy
-    bdy: cython.double = by - dy
-    cdy: cython.double = cy - dy
+    adx: cython.double
+    bdx: cython.double
+    cdx: cython.double
+    ady: cython.double
+    bdy: cython.double
+    cdy: cython.double
+    adx, bdx, cdx, ady, bdy, cdy = _translated(ax, ay, bx, by, cx, cy, dx, dy)
     alift: cython.double = adx * adx + ady * ady
     blift: cython.double = bdx * bdx + bdy * bdy
     clift: cython.double = cdx * cdx + cdy * cdy
@@ -990,7 +1047,7 @@ def incircle_adaptive(
     ax: cython.double, ay: cython.double, bx: cython.double, by: cython.double,
     cx: cython.double, cy: cython.double, dx: cython.double, dy: cython.double,
 ) -> cython.double:
-    """incircle when the inlined filter could not decide: range check, then exact."""
+    """incircle when the inlined filter could not decide (``_adaptive``)."""
     coords = cython.declare(cython.double[8])
     coords[0] = ax
     coords[1] = ay
@@ -1000,26 +1057,7 @@ def incircle_adaptive(
     coords[5] = cy
     coords[6] = dx
     coords[7] = dy
-    status: cython.int
-    k: cython.int
-    status, k = _choose_scale(coords, 8, _I_LOW, _I_HIGH)
-    if status == _ALLZERO:
-        return 0.0
-    if status == _NONFINITE:
-        return incircle_fast(ax, ay, bx, by, cx, cy, dx, dy)
-    ok: cython.bint
-    v: cython.double
-    if status == _WIDE:
-        ok, v = _incircle_wide(ax, ay, bx, by, cx, cy, dx, dy)
-        if ok:
-            return v
-        with cython.gil:
-            return _incircle_integer(ax, ay, bx, by, cx, cy, dx, dy)
-    if k == 0:
-        return _incircle_exact(ax, ay, bx, by, cx, cy, dx, dy)
-    s: cython.double = ldexp(1.0, k)
-    v = _incircle_exact(ax * s, ay * s, bx * s, by * s, cx * s, cy * s, dx * s, dy * s)
-    return _unscale(v, -4 * k)
+    return _adaptive(coords, _INCIRCLE)
 
 
 @cython.cfunc
@@ -1030,12 +1068,13 @@ def _incircle_exact(
     cx: cython.double, cy: cython.double, dx: cython.double, dy: cython.double,
 ) -> cython.double:
     """Triangle's complete incircle (stage 0, A, then adapt); inputs in safe range."""
-    adx: cython.double = ax - dx
-    bdx: cython.double = bx - dx
-    cdx: cython.double = cx - dx
-    ady: cython.double = ay - dy
-    bdy: cython.double = by - dy
-    cdy: cython.double = cy - dy
+    adx: cython.double
+    bdx: cython.double
+    cdx: cython.double
+    ady: cython.double
+    bdy: cython.double
+    cdy: cython.double
+    adx, bdx, cdx, ady, bdy, cdy = _translated(ax, ay, bx, by, cx, cy, dx, dy)
     bdxcdy: cython.double = bdx * cdy
     cdxbdy: cython.double = cdx * bdy
     alift: cython.double = adx * adx + ady * ady
@@ -1103,12 +1142,13 @@ def _incircle_adapt(
     cx: cython.double, cy: cython.double, dx: cython.double, dy: cython.double, permanent: cython.double,
 ) -> cython.double:
     """Stages B, C, D of incircle (Shewchuk's incircleadapt)."""
-    adx: cython.double = ax - dx
-    bdx: cython.double = bx - dx
-    cdx: cython.double = cx - dx
-    ady: cython.double = ay - dy
-    bdy: cython.double = by - dy
-    cdy: cython.double = cy - dy
+    adx: cython.double
+    bdx: cython.double
+    cdx: cython.double
+    ady: cython.double
+    bdy: cython.double
+    cdy: cython.double
+    adx, bdx, cdx, ady, bdy, cdy = _translated(ax, ay, bx, by, cx, cy, dx, dy)
     w = cython.declare(cython.double[316])
     finlen: cython.int = _incircle_expansion_b(adx, bdx, cdx, ady, bdy, cdy, w)
     det: cython.double = _estimate(finlen, w, 220)

@@ -42,7 +42,6 @@ def delaunay(
     work: np.ndarray,
     *,
     method: str = "divconq",
-    seed: int = 0,
     extra_vertices: int = 0,
     extra_triangles: int = 0,
     threads: int = 1,
@@ -53,12 +52,13 @@ def delaunay(
     Returns the mesh (ghosts removed; no triangles if the points are all
     collinear) and ``duplicate_of``: -1, or the index of the copy of that
     point which is in the mesh (the lowest index of the copies).  The
-    mesh's ``hull_start`` is the vertex whose counter-clockwise hull edge
-    Triangle's outer-space handle holds afterwards (where its hull walks
-    and its location of hole and region points start), or -1 when that is
-    the edge leaving the least (x, y) vertex (divide and conquer; no hull).
-    ``method`` is one of ``METHODS``; ``seed`` is not used (neither method
-    is randomized: Triangle's incremental method inserts in input order).
+    mesh's ``outer_space_edge`` is the hull edge Triangle's outer-space
+    handle holds afterwards, where its hull walks and its location of hole
+    and region points start (divide and conquer: the edge leaving the
+    least (x, y) vertex; incremental insertion: the first hull edge the
+    removal of the bounding triangle met; NO_EDGE without a hull).
+    ``method`` is one of ``METHODS`` (neither is randomized, so there is
+    no seed: Triangle's incremental method inserts in input order).
     ``extra_vertices`` and ``extra_triangles`` reserve room for later
     stages; ``tables`` are ``Mesh``'s optional tables (``parents``,
     ``area_bounds``, ``attributes``, ``constraints``).  Divide and conquer
@@ -153,7 +153,7 @@ def _incremental(xy, work, extra_vertices, extra_triangles, tables) -> tuple[Mes
     m = Mesh(pts, 2 * n + 8 + extra_triangles, vertices=n + 3 + extra_vertices, work=work, **tables)
     dup = np.full(n, -1, dtype=np.int64)
     if n:
-        dup, m.hull_start = incremental.triangulate(m, incremental.box_corners(pts))
+        dup = incremental.triangulate(m, incremental.box_corners(pts))
     if scale != 1.0:
         np.asarray(m.xy)[:n] = xy
     m.rng = 12345  # the later stages' walks start their own sequence

@@ -45,7 +45,7 @@ v[k]; ours stores corners (v1, v2, v0) (the output order), so handle
   walk around the box corners, from the dummy handle's record (freed
   last); the first hull edge that walk meets becomes the outer-space
   handle, the edge Triangle starts its hull walks and its hole location
-  from (``triangulate`` returns its origin).
+  from (``triangulate`` sets it as ``Mesh.outer_space_edge``).
 
 The tests are the exact predicates, where Triangle's adaptive ones agree
 with them (docs/fidelity.md names the ties where they do not).  The work
@@ -66,32 +66,43 @@ from cython.cimports.instrument.counters import C_CREATED, C_DELETED, C_DUPLICAT
 INSIDE = cython.declare(cython.int, 0)
 ON_EDGE = cython.declare(cython.int, 1)
 ON_VERTEX = cython.declare(cython.int, 2)
-# the stage's state, one int64 array: Triangle's random generator, the
-# sample count, the recent handle, the outer-space handle, the size of the
-# pool's first block
-ST_SEED = cython.declare(cython.int, 0)
-ST_SAMPLES = cython.declare(cython.int, 1)
-ST_RECENT = cython.declare(cython.int, 2)
-ST_DUMMY = cython.declare(cython.int, 3)
-ST_FIRST_BLOCK = cython.declare(cython.int, 4)
 
 #: Triangle's pool blocks: the first holds max(BLOCK, 2n - 2) triangles, the others BLOCK.
 BLOCK = cython.declare(cython.Py_ssize_t, 4092)
 
 
+@cython.cclass
+class Insertion:
+    """What the method carries from one insertion to the next, besides the
+    mesh (fields in incremental.pxd): Triangle's random generator
+    (``seed``), how many records a location samples (``samples``, which
+    only grows), the last insertion's handle (``recent``, -1 before the
+    first), the outer-space handle (``outer_space``: the box edge Triangle's
+    dummy points at, where the removal of the box starts), the size of the
+    first block of Triangle's pool (``first_block``, where the sampling's
+    blocks start), and the first hull edge the removal of the box left
+    (``first_hull``, NO_EDGE until then): the outer-space handle after."""
+
+    def __init__(self, outer_space: Index, first_block: Index):
+        self.seed = 1
+        self.samples = 1
+        self.recent = -1
+        self.outer_space = outer_space
+        self.first_block = first_block
+        self.first_hull = NO_EDGE
+
+
 # ------------------------------------------------------------ small helpers
-
-
 
 
 @cython.cfunc
 @cython.inline
 @cython.nogil
 @cython.exceptval(check=False)
-def _random(st: cython.longlong[::1], choices: Index) -> Index:
+def _random(st: Insertion, choices: Index) -> Index:
     """Triangle's generator: a number in 0 .. choices - 1."""
-    st[ST_SEED] = (st[ST_SEED] * 1366 + 150889) % 714025
-    return st[ST_SEED] // (714025 // choices + 1)
+    st.seed = (st.seed * 1366 + 150889) % 714025
+    return st.seed // (714025 // choices + 1)
 
 
 @cython.cfunc
@@ -157,7 +168,7 @@ def _make(m: Mesh, c0: Index, c1: Index, c2: Index, nb: Index) -> Index:
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
-def _walk(m: Mesh, e: Index, px: cython.double, py: cython.double, st: cython.longlong[::1]) -> tuple[cython.int, Index]:
+def _walk(m: Mesh, e: Index, px: cython.double, py: cython.double, st: Insertion) -> tuple[cython.int, Index]:
     """Walk from handle e (p to its left) to p, as Triangle's ``preciselocate``:
     at (o, d, a), cross o-a if p is beyond it only, a-d if beyond it only,
     and if beyond both the one the dot product (a - p).(d - o) picks.
@@ -179,7 +190,7 @@ def _walk(m: Mesh, e: Index, px: cython.double, py: cython.double, st: cython.lo
         d = dest(m, e)
         a = m.corner[e]
         if _same(m, a, px, py):
-            st[ST_RECENT] = lprev(e)
+            st.recent = lprev(e)
             return ON_VERTEX, lprev(e)
         sl = _orient(m, o, a, px, py)
         sr = _orient(m, a, d, px, py)
@@ -236,17 +247,17 @@ def _scan(m: Mesh, px: cython.double, py: cython.double) -> tuple[cython.int, In
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
-def _locate(m: Mesh, px: cython.double, py: cython.double, st: cython.longlong[::1]) -> tuple[cython.int, Index]:
+def _locate(m: Mesh, px: cython.double, py: cython.double, st: Insertion) -> tuple[cython.int, Index]:
     """Triangle's ``locate`` in a mesh without dead records: the start is the
     nearest (strictly, in this order) of the outer-space handle, the recent
     handle and the sampled records (each at its handle 0), by their origins.
     A point equal to the start's origin or destination is ON_VERTEX; a point
     on the start edge's line strictly between its ends is ON_EDGE; a point
     right of it starts from the other side; then ``_walk``."""
-    start: Index = st[ST_DUMMY]
+    start: Index = st.outer_space
     best: cython.double = _distance(m, org(m, start), px, py)
     dist: cython.double
-    recent: Index = st[ST_RECENT]
+    recent: Index = st.recent
     if recent >= 0:
         if _same(m, org(m, recent), px, py):
             return ON_VERTEX, recent
@@ -256,12 +267,12 @@ def _locate(m: Mesh, px: cython.double, py: cython.double, st: cython.longlong[:
             best = dist
     # samples, block by block of Triangle's pool (every record is alive here)
     items: Index = m.nslot
-    s: Index = st[ST_SAMPLES]
+    s: Index = st.samples
     while 11 * s * s * s < items:
         s += 1
-    st[ST_SAMPLES] = s
+    st.samples = s
     base: Index = 0
-    block: Index = st[ST_FIRST_BLOCK]
+    block: Index = st.first_block
     population: Index
     t: Index
     i: Index
@@ -278,10 +289,10 @@ def _locate(m: Mesh, px: cython.double, py: cython.double, st: cython.longlong[:
     o: Index = org(m, start)
     d: Index = dest(m, start)
     if _same(m, o, px, py):
-        st[ST_RECENT] = start
+        st.recent = start
         return ON_VERTEX, start
     if _same(m, d, px, py):
-        st[ST_RECENT] = lnext(start)
+        st.recent = lnext(start)
         return ON_VERTEX, lnext(start)
     ahead: cython.double = _orient(m, o, d, px, py)
     xy = m.xy
@@ -300,16 +311,16 @@ def _locate(m: Mesh, px: cython.double, py: cython.double, st: cython.longlong[:
 @cython.inline
 @cython.nogil
 @cython.exceptval(check=False)
-def _take_box_edge(m: Mesh, e: Index, st: cython.longlong[::1]) -> cython.void:
+def _take_box_edge(m: Mesh, e: Index, st: Insertion) -> cython.void:
     """Edge e now holds a box edge (no twin): outer space points at it."""
     if m.twin[e] == NO_EDGE:
-        st[ST_DUMMY] = e
+        st.outer_space = e
 
 
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
-def _split_triangle(m: Mesh, e: Index, q: Index, nb: Index, st: cython.longlong[::1]) -> cython.void:
+def _split_triangle(m: Mesh, e: Index, q: Index, nb: Index, st: Insertion) -> cython.void:
     """Point q inside the triangle of handle e = (a, b, c): the record keeps
     (a, b, q), new records (b, c, q) and (c, a, q) in our corner order."""
     t: Index = e // 3
@@ -333,7 +344,7 @@ def _split_triangle(m: Mesh, e: Index, q: Index, nb: Index, st: cython.longlong[
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
-def _split_edge(m: Mesh, e: Index, q: Index, nb: Index, st: cython.longlong[::1]) -> cython.void:
+def _split_edge(m: Mesh, e: Index, q: Index, nb: Index, st: Insertion) -> cython.void:
     """Point q on the edge of handle e = (a, b, c), whose other side is
     f = (b, a, d): e's record becomes (q, b, c), f's (b, q, d), and new
     records take (a, d, q) and (c, a, q) in our corner order."""
@@ -404,7 +415,7 @@ def _should_flip(m: Mesh, e: Index, nb: Index) -> cython.bint:
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
-def _flip(m: Mesh, e: Index, nb: Index, st: cython.longlong[::1]) -> cython.void:
+def _flip(m: Mesh, e: Index, nb: Index, st: Insertion) -> cython.void:
     """Flip edge e = (x, y, apex q) with its twin f = (y, x, apex d): each
     handle (o, t, apex) becomes (far, apex, o), so e's record holds
     (x, d, q) and f's (d, y, q); both keep their handle numbers."""
@@ -447,7 +458,7 @@ def _set_handle(m: Mesh, e: Index, o: Index, d: Index, a: Index, nb: Index) -> c
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
-def _legalize(m: Mesh, e: Index, stop: Index, nb: Index, st: cython.longlong[::1]) -> cython.void:
+def _legalize(m: Mesh, e: Index, stop: Index, nb: Index, st: Insertion) -> cython.void:
     """Test the edges facing the new point counter-clockwise around it from
     handle e (whose apex it is) until the edge ending at ``stop`` is
     accepted; a flipped edge x-y is followed by x-d.  The last handle,
@@ -460,7 +471,7 @@ def _legalize(m: Mesh, e: Index, stop: Index, nb: Index, st: cython.longlong[::1
         if dest(m, e) == stop:
             break
         e = lnext(m.twin[lnext(e)])
-    st[ST_RECENT] = lprev(e)
+    st.recent = lprev(e)
 
 
 # ------------------------------------------------------------ the box
@@ -470,11 +481,10 @@ def _legalize(m: Mesh, e: Index, stop: Index, nb: Index, st: cython.longlong[::1
 @cython.inline
 @cython.nogil
 @cython.exceptval(check=False)
-def _free_box_record(m: Mesh, t: Index, nb: Index, hull: cython.longlong[::1]) -> cython.void:
+def _free_box_record(m: Mesh, t: Index, nb: Index, st: Insertion) -> cython.void:
     """Free a record that touches the box; across its edge between two
     points (if any) a triangle of points is left with a hull edge (none if
-    the points are collinear).  ``hull[0]`` counts them, ``hull[1]`` keeps
-    the first."""
+    the points are collinear); the first one is kept in ``st.first_hull``."""
     e: Index
     w: Index
     u: Index
@@ -488,21 +498,20 @@ def _free_box_record(m: Mesh, t: Index, nb: Index, hull: cython.longlong[::1]) -
             u = 3 * (w // 3)
             if m.corner[u] < nb and m.corner[u + 1] < nb and m.corner[u + 2] < nb:
                 m.twin[w] = NO_EDGE
-                if hull[0] == 0:
-                    hull[1] = w
-                hull[0] += 1
+                if st.first_hull == NO_EDGE:
+                    st.first_hull = w
     kill_triangle(m, t)
 
 
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
-def _remove_box(m: Mesh, nb: Index, st: cython.longlong[::1], hull: cython.longlong[::1]) -> cython.void:
+def _remove_box(m: Mesh, nb: Index, st: Insertion) -> cython.void:
     """Free every record touching the box: walk around the box corners from
     the outer-space handle's record, crossing from each record to the next
     through the edge leaving the current corner (turning to the next corner
     at a box edge), freeing each one met and the first one last."""
-    h0: Index = st[ST_DUMMY]
+    h0: Index = st.outer_space
     h: Index = h0
     e: Index
     s: Index
@@ -511,9 +520,9 @@ def _remove_box(m: Mesh, nb: Index, st: cython.longlong[::1], hull: cython.longl
         s = m.twin[e]
         if s == NO_EDGE or s // 3 == h0 // 3:
             break
-        _free_box_record(m, s // 3, nb, hull)
+        _free_box_record(m, s // 3, nb, st)
         h = s
-    _free_box_record(m, h0 // 3, nb, hull)
+    _free_box_record(m, h0 // 3, nb, st)
 
 
 # ------------------------------------------------------------ building
@@ -522,7 +531,7 @@ def _remove_box(m: Mesh, nb: Index, st: cython.longlong[::1], hull: cython.longl
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
-def _insert_all(m: Mesh, n: Index, st: cython.longlong[::1], dup: cython.longlong[::1]) -> cython.void:
+def _insert_all(m: Mesh, n: Index, st: Insertion, dup: cython.longlong[::1]) -> cython.void:
     """Insert points 0 .. n-1 in order; a point equal to an inserted vertex
     is recorded in ``dup`` and left out."""
     status: cython.int
@@ -561,33 +570,26 @@ def box_corners(xy) -> np.ndarray:
     ])  # fmt: skip
 
 
-def triangulate(m: Mesh, box) -> tuple[np.ndarray, int]:
+def triangulate(m: Mesh, box) -> np.ndarray:
     """Triangulate the first ``m.nvert`` vertices of ``m`` (whose rows must
     leave room for three more: the bounding triangle's corners ``box``), in
     input order.
 
-    Returns ``(dup, start)``: per vertex -1 or the inserted vertex it
-    duplicates, and the origin of the first hull edge the removal of the
-    box met, Triangle's outer-space handle afterwards (-1: no hull, every
-    point collinear, no triangle).  The box records are freed in
+    Returns ``dup``: per vertex -1 or the inserted vertex it duplicates.
+    ``m.outer_space_edge`` becomes the first hull edge the removal of the
+    box met, Triangle's outer-space handle afterwards (NO_EDGE: no hull,
+    every point collinear, no triangle).  The box records are freed in
     Triangle's order; ``m.nvert`` is unchanged."""
     n: Index = m.nvert
     xy = np.asarray(m.xy)
     xy[n : n + 3] = box
     t: Index = new_triangle(m, n, n + 1, n + 2)  # Triangle's (B3, B1, B2): ours in output order
-    st_a = np.zeros(5, dtype=np.int64)
-    st: cython.longlong[::1] = st_a
-    st[ST_SEED] = 1
-    st[ST_SAMPLES] = 1
-    st[ST_RECENT] = -1
-    st[ST_DUMMY] = 3 * t + 2  # handle 0: B1 -> B2
-    st[ST_FIRST_BLOCK] = max(BLOCK, 2 * n - 2)
+    st: Insertion = Insertion(3 * t + 2, max(BLOCK, 2 * n - 2))  # outer space: handle 0, B1 -> B2
     dup = np.full(n, -1, dtype=np.int64)
     d: cython.longlong[::1] = dup
-    hull_a = np.array([0, NO_EDGE], dtype=np.int64)
-    hull: cython.longlong[::1] = hull_a
     with cython.nogil:
         _insert_all(m, n, st, d)
-        _remove_box(m, n, st, hull)
+        _remove_box(m, n, st)
     xy[n : n + 3] = 0.0
-    return dup, (int(m.corner[lnext(hull_a[1])]) if hull_a[0] > 0 else -1)
+    m.outer_space_edge = st.first_hull
+    return dup

@@ -126,6 +126,6 @@ def enclose_hull(ms: MeshState) -> None:
     """-c: every hull edge becomes a subsegment with marker 1, in Triangle's
     order: around the hull from the edge its outer-space handle holds."""
     ms.mesh.add_constraint_tables()
-    start = start_hull_edge(ms.mesh, ms.mesh.hull_start)
+    start = start_hull_edge(ms.mesh)
     while not mark_hull(ms.mesh, ms.segs, -1, start):
         ms.grow(records=ms.segs.capacity)

@@ -41,7 +41,7 @@ from cython.cimports.instrument.core.insert import (
     flip, flip_in_place, lawson, lawson_in_place, should_flip, split_edge, split_edge_in_place, split_triangle, star_edges,
 )
 from cython.cimports.instrument.core.locate import LOC_INSIDE, LOC_ON_EDGE, LOC_ON_VERTEX, walk
-from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, Index, Mesh, lnext, lprev, set_parent, spare_triangles
+from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, Index, Mesh, lnext, lprev, next_hull_edge, set_parent, spare_triangles
 from cython.cimports.instrument.core.navigate import find_edge, remember_corners, vertex_edge
 from cython.cimports.instrument.core.predicates import dot_sign, incircle, orient2d
 from cython.cimports.instrument.core.scaling import crossing_terms, unit_scale
@@ -1226,9 +1226,7 @@ def mark_hull(m: Mesh, segs: Subsegments, source: cython.int, start: Index) -> c
         if segs.count >= segs.marker.shape[0]:
             return False
         mark_subsegment(m, segs, e, 1, source, False)
-        f = lnext(e)  # the next hull edge leaves this one's destination
-        while m.twin[f] != NO_EDGE:
-            f = lnext(m.twin[f])
+        f = next_hull_edge(m, e)
         e = f if f != start else NO_EDGE
     for t in range(m.nslot):
         if m.stamp[t] <= 0:
