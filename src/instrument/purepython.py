@@ -90,8 +90,11 @@ def load_source(name: str):
     the mode (for tests of a kernel module's internals, which compiled code
     does not expose).  Only for modules that import no other kernel module."""
     _alias_cimports()
-    spec = importlib.util.find_spec(name)
-    path = Path(spec.origin).with_suffix("").with_suffix(".py")
+    # in the pure-Python mode the module may already be loaded from its .py
+    # by this module's finder, whose spec names no origin: its file does
+    loaded = sys.modules.get(name)
+    origin = getattr(loaded, "__file__", None) or importlib.util.find_spec(name).origin
+    path = Path(origin).with_suffix("").with_suffix(".py")
     loader = importlib.machinery.SourceFileLoader(f"{name}.__source__", str(path))
     module = importlib.util.module_from_spec(importlib.util.spec_from_loader(loader.name, loader))
     loader.exec_module(module)
