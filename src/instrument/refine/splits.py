@@ -305,7 +305,7 @@ def _split_at_apex(r: Refiner, m: Mesh, segs: Subsegments, e: Index, f: Index, t
         if triangles:
             test_triangle(r, m, segs, r.fan[i])
     if flips:  # (without flips the rim is the far triangle's, as before: c faces none of it anew)
-        test_fan(r, m, segs, made, False)
+        test_fan(r, m, segs, made, False, False)
     check_subsegment(r, m, h0)
     check_subsegment(r, m, h1)
     trace_row(r, T_SEGMENT, made0 + 2 * flips, 1 + made0 + 2 * flips, 0, r.hsize)
@@ -568,7 +568,7 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
     m.work[C_STEINER] += 1
     if r.budget > 0:
         r.budget -= 1
-    test_fan(r, m, segs, nb, triangles)
+    test_fan(r, m, segs, nb, triangles, False)
     # the halves themselves
     if eb >= 0:
         check_subsegment(r, m, eb)
@@ -824,22 +824,7 @@ def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cyth
     # Triangle's flips circle the new vertex from the located edge's origin
     # (its destination when the point is on it)
     order_rim(r, m, nb, m.corner[lprev(e)] if status == LOC_ON_EDGE else m.corner[lnext(e)])
-    # a point inside a subsegment's lens is rejected; the subsegment is split
-    encroached: Index = 0
-    k: Index
-    for j in range(nb):  # in the rim's order
-        k = r.fan[j]
-        if r.bnd[k, 3] != NO_SEG and in_lens(r, m, r.bnd[k, 1], r.bnd[k, 2], px, py):
-            encroached += 1
-            queue_side(r, m, r.bnd[k, 4], True)
-    if encroached:
-        if r.cfg.strategy == TRIANGLE and status == LOC_INSIDE and rejected_fan_records(r, m, e, nb):
-            queue_rejected_fan(r, m, segs, nb, px, py)  # Triangle queued them before it rejected the point
-        forget_cavity(r, m, n)
-        m.work[C_REJECTED] += 1
-        m.work[C_UNDONE] += nb
-        trace_row(r, T_REJECTED, 0, 0, steps, r.hsize)
-        return DONE
+    # A point inside a subsegment's lens is rejected; the subsegment is split.
     # The fan must be counter-clockwise: the point strictly left of every rim
     # edge (exact).  With the start edge checked above the walk's answer is
     # exact, and the cavity of a constrained Delaunay mesh is star-shaped
@@ -850,19 +835,40 @@ def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cyth
     # rim edge, or on a rim vertex, the triangle stays unsplit (a Steiner
     # point that could not be placed, counted with those that fell on a
     # vertex) and refinement goes on with a valid mesh.  Triangle makes no
-    # such test: these orientations are not counted.
-    for j in range(nb):
-        if orient2d(px, py, m.xy[r.bnd[j, 1], 0], m.xy[r.bnd[j, 1], 1], m.xy[r.bnd[j, 2], 0], m.xy[r.bnd[j, 2], 1]) <= 0.0:
-            forget_cavity(r, m, n)
-            m.work[C_DUPLICATE] += 1
-            return DONE
+    # such test: these orientations are not counted.  Both tests in one pass
+    # over the rim; the orientations stop at the first failure or the first
+    # encroached subsegment, which outranks a folded fan.
+    encroached: Index = 0
+    folded: cython.bint = False
+    k: Index
+    for j in range(nb):  # in the rim's order
+        k = r.fan[j]
+        if r.bnd[k, 3] != NO_SEG and in_lens(r, m, r.bnd[k, 1], r.bnd[k, 2], px, py):
+            encroached += 1
+            queue_side(r, m, r.bnd[k, 4], True)
+        if not folded and encroached == 0 and orient2d(
+            px, py, m.xy[r.bnd[k, 1], 0], m.xy[r.bnd[k, 1], 1], m.xy[r.bnd[k, 2], 0], m.xy[r.bnd[k, 2], 1]
+        ) <= 0.0:
+            folded = True
+    if encroached:
+        if r.cfg.strategy == TRIANGLE and status == LOC_INSIDE and rejected_fan_records(r, m, e, nb):
+            queue_rejected_fan(r, m, segs, nb, px, py)  # Triangle queued them before it rejected the point
+        forget_cavity(r, m, n)
+        m.work[C_REJECTED] += 1
+        m.work[C_UNDONE] += nb
+        trace_row(r, T_REJECTED, 0, 0, steps, r.hsize)
+        return DONE
+    if folded:
+        forget_cavity(r, m, n)
+        m.work[C_DUPLICATE] += 1
+        return DONE
     # attributes: barycentric in (org, dest, apex)
     v: Index = new_vertex(m, px, py, V_FREE, 0, b, c, a, xi, eta)
     fill_cavity(r, m, v, n, nb)
     m.work[C_STEINER] += 1
     if r.budget > 0:
         r.budget -= 1
-    test_fan(r, m, segs, nb, True)
+    test_fan(r, m, segs, nb, True, True)  # (the point is in no rim subsegment's lens: tested above)
     trace_row(r, T_OFFCENTER if off else T_CIRCUMCENTER, nb, n, steps, r.hsize)
     return DONE
 
