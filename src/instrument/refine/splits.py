@@ -824,7 +824,22 @@ def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cyth
     # Triangle's flips circle the new vertex from the located edge's origin
     # (its destination when the point is on it)
     order_rim(r, m, nb, m.corner[lprev(e)] if status == LOC_ON_EDGE else m.corner[lnext(e)])
-    # A point inside a subsegment's lens is rejected; the subsegment is split.
+    # a point inside a subsegment's lens is rejected; the subsegment is split
+    encroached: Index = 0
+    k: Index
+    for j in range(nb):  # in the rim's order
+        k = r.fan[j]
+        if r.bnd[k, 3] != NO_SEG and in_lens(r, m, r.bnd[k, 1], r.bnd[k, 2], px, py):
+            encroached += 1
+            queue_side(r, m, r.bnd[k, 4], True)
+    if encroached:
+        if r.cfg.strategy == TRIANGLE and status == LOC_INSIDE and rejected_fan_records(r, m, e, nb):
+            queue_rejected_fan(r, m, segs, nb, px, py)  # Triangle queued them before it rejected the point
+        forget_cavity(r, m, n)
+        m.work[C_REJECTED] += 1
+        m.work[C_UNDONE] += nb
+        trace_row(r, T_REJECTED, 0, 0, steps, r.hsize)
+        return DONE
     # The fan must be counter-clockwise: the point strictly left of every rim
     # edge (exact).  With the start edge checked above the walk's answer is
     # exact, and the cavity of a constrained Delaunay mesh is star-shaped
@@ -835,33 +850,12 @@ def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cyth
     # rim edge, or on a rim vertex, the triangle stays unsplit (a Steiner
     # point that could not be placed, counted with those that fell on a
     # vertex) and refinement goes on with a valid mesh.  Triangle makes no
-    # such test: these orientations are not counted.  Both tests in one pass
-    # over the rim; the orientations stop at the first failure or the first
-    # encroached subsegment, which outranks a folded fan.
-    encroached: Index = 0
-    folded: cython.bint = False
-    k: Index
-    for j in range(nb):  # in the rim's order
-        k = r.fan[j]
-        if r.bnd[k, 3] != NO_SEG and in_lens(r, m, r.bnd[k, 1], r.bnd[k, 2], px, py):
-            encroached += 1
-            queue_side(r, m, r.bnd[k, 4], True)
-        if not folded and encroached == 0 and orient2d(
-            px, py, m.xy[r.bnd[k, 1], 0], m.xy[r.bnd[k, 1], 1], m.xy[r.bnd[k, 2], 0], m.xy[r.bnd[k, 2], 1]
-        ) <= 0.0:
-            folded = True
-    if encroached:
-        if r.cfg.strategy == TRIANGLE and status == LOC_INSIDE and rejected_fan_records(r, m, e, nb):
-            queue_rejected_fan(r, m, segs, nb, px, py)  # Triangle queued them before it rejected the point
-        forget_cavity(r, m, n)
-        m.work[C_REJECTED] += 1
-        m.work[C_UNDONE] += nb
-        trace_row(r, T_REJECTED, 0, 0, steps, r.hsize)
-        return DONE
-    if folded:
-        forget_cavity(r, m, n)
-        m.work[C_DUPLICATE] += 1
-        return DONE
+    # such test: these orientations are not counted.
+    for j in range(nb):
+        if orient2d(px, py, m.xy[r.bnd[j, 1], 0], m.xy[r.bnd[j, 1], 1], m.xy[r.bnd[j, 2], 0], m.xy[r.bnd[j, 2], 1]) <= 0.0:
+            forget_cavity(r, m, n)
+            m.work[C_DUPLICATE] += 1
+            return DONE
     # attributes: barycentric in (org, dest, apex)
     v: Index = new_vertex(m, px, py, V_FREE, 0, b, c, a, xi, eta)
     fill_cavity(r, m, v, n, nb)
