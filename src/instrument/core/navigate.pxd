@@ -6,6 +6,7 @@ cpdef Index vertex_edge(Mesh m, Index v) noexcept nogil
 cpdef Index edge_around(Mesh m, Index e0, Index v) noexcept nogil
 cpdef Index find_edge(Mesh m, Index u, Index v) noexcept nogil
 cpdef void build_vertex_edges(Mesh m) noexcept nogil
+cpdef void turn_vertex_edges(Mesh m, Index shift) noexcept nogil
 cpdef Index list_edges(Mesh m, bint constrained, long long[::1] out) noexcept nogil
 cpdef void edge_ends(Mesh m, long long[::1] edges, int[:, ::1] out) noexcept nogil
 

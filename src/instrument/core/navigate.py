@@ -125,6 +125,23 @@ def build_vertex_edges(m: Mesh) -> cython.void:
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
+def turn_vertex_edges(m: Mesh, shift: Index) -> cython.void:
+    """After ``Mesh.rotate_corners(shift)`` (1 or 2): each vertex's hint
+    renumbered as its triangle's edges were (shift 1: lprev, shift 2:
+    lnext), so it names the same edge again.  One pass over the vertices
+    instead of ``build_vertex_edges``' over every triangle's corners (after
+    refinement, six times as many); a stale hint stays a hint
+    (``origin_edge`` checks it)."""
+    e: Index
+    for v in range(m.nvert):
+        e = m.vtri[v]
+        if e >= 0:
+            m.vtri[v] = lprev(e) if shift == 1 else lnext(e)
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
 def list_edges(m: Mesh, constrained: cython.bint, out: cython.longlong[::1]) -> Index:
     """Each edge once, as Triangle lists them, into ``out`` (room for three
     per triangle); returns how many.  Triangle by triangle in slot order, the

@@ -31,7 +31,7 @@ import numpy as np
 from .. import limits
 from ..core.mesh import V_DEAD
 from ..core.filled import filled
-from ..core.navigate import build_vertex_edges
+from ..core.navigate import build_vertex_edges, turn_vertex_edges
 from ..core.scaling import half_extent
 from ..core.status import DONE, PAUSE, PRECISION
 from ..errors import TriangleError
@@ -127,7 +127,7 @@ def run(
             ) from None
         raise
     ms.mesh.rotate_corners(1)
-    build_vertex_edges(ms.mesh)
+    turn_vertex_edges(ms.mesh, 1)  # (the hints refinement kept, renumbered: no rebuild)
     if trace:
         return _trace_table(np.asarray(r.trace)[: r.ntrace])
     _spare(r)

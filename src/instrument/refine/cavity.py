@@ -204,6 +204,28 @@ def order_rim(r: Refiner, m: Mesh, nb: Index, first: Index) -> cython.void:
         m.vslot[r.bnd[j, 1]] = -1
 
 
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _remake(m: Mesh, t: Index, a: Index, b: Index, c: Index) -> Index:
+    """Live slot ``t`` as ``kill_triangle`` then ``new_triangle(m, a, b, c)``
+    would leave it when the kill's slot is the one taken: its stamp one
+    higher, corners ``a b c``, no neighbours, no subsegments."""
+    e: Index = 3 * t
+    m.stamp[t] += 1
+    m.corner[e] = cython.cast(cython.int, a)
+    m.corner[e + 1] = cython.cast(cython.int, b)
+    m.corner[e + 2] = cython.cast(cython.int, c)
+    m.twin[e] = NO_EDGE
+    m.twin[e + 1] = NO_EDGE
+    m.twin[e + 2] = NO_EDGE
+    m.seg[e] = NO_SEG
+    m.seg[e + 1] = NO_SEG
+    m.seg[e + 2] = NO_SEG
+    return t
+
+
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
@@ -216,10 +238,15 @@ def fill_cavity(r: Refiner, m: Mesh, p: Index, n: Index, nb: Index) -> cython.vo
     v: Index
     k: Index
     nxt: Index
+    # Killing the cavity pushes r.cav[0], ..., r.cav[n-1] on the free stack
+    # and the fan's new triangles pop it: new triangle j takes r.cav[n-1-j]
+    # while they last (the rest as new_triangle finds them), and a cavity
+    # larger than its fan leaves r.cav[0], ..., r.cav[n-nb-1] free.  Done so
+    # directly: the same slots and stamps, without the round trip.
     for i in range(n):
-        t = r.cav[i]
-        m.tflag[t] = 0
-        kill_triangle(m, t)
+        m.tflag[r.cav[i]] = 0
+    for i in range(n - nb):
+        kill_triangle(m, r.cav[i])
     m.work[C_DELETED] += n
     links: Index = 0
     first_org: Index = -1
@@ -230,8 +257,8 @@ def fill_cavity(r: Refiner, m: Mesh, p: Index, n: Index, nb: Index) -> cython.vo
         k = r.fan[j]
         u = r.bnd[k, 1]
         v = r.bnd[k, 2]
-        t = new_triangle(m, p, u, v)
-        bond(m, 3 * t, r.bnd[k, 0])  # (new_triangle left the other edges unlinked)
+        t = _remake(m, r.cav[n - 1 - j], p, u, v) if j < n else new_triangle(m, p, u, v)
+        bond(m, 3 * t, r.bnd[k, 0])  # (the other edges are left unlinked)
         m.seg[3 * t] = cython.cast(cython.int, r.bnd[k, 3])
         if inherits:
             inherit(m, t, r.bval[k, 0], r.bval[k, 1])

@@ -23,7 +23,7 @@ from cython.cimports.instrument.core.scaling import scaled_pair, unit_scale
 from cython.cimports.libc.math import fabs, frexp
 from cython.cimports.instrument.core.subsegments import Subsegments
 from cython.cimports.instrument.refine.cavity import collect_cavity, forget_cavity, inherited
-from cython.cimports.instrument.refine.encroach import check_subsegment
+from cython.cimports.instrument.refine.encroach import check_subsegment, queue_side
 from cython.cimports.instrument.refine.order import ADVERSARY, LARGEST, RANDOM, SMALLEST, TOP_BUCKET, TRIANGLE, priority, triangle_bucket, wide_bucket
 from cython.cimports.instrument.refine.queues import bucket_make_ready, queue_push, queue_push_ghost
 from cython.cimports.instrument.refine.state import Refiner
@@ -483,16 +483,23 @@ def queue_triangles(r: Refiner, m: Mesh, ts: cython.longlong[::1]) -> cython.voi
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
-def test_fan(r: Refiner, m: Mesh, segs: Subsegments, nb: Index, triangles: cython.bint) -> cython.void:
+def test_fan(r: Refiner, m: Mesh, segs: Subsegments, nb: Index, triangles: cython.bint, apex_clear: cython.bint) -> cython.void:
     """Quality-test the new triangles ``r.fan[:nb]`` (if ``triangles``) and
-    pool the encroached subsegments on the fan's rim."""
+    pool the encroached subsegments on the fan's rim.  ``apex_clear``: the
+    fan's apex (corner 0) is known to lie outside every rim subsegment's
+    lens (a bad triangle's split tested exactly that, with the same
+    arguments, before it inserted the point), so only the far sides' apices
+    are tested."""
     t: Index
     for j in range(nb):
         t = r.fan[j]
         if triangles:
             _test(r, m, segs, t)
         if m.seg[3 * t] != NO_SEG:
-            check_subsegment(r, m, 3 * t)
+            if apex_clear:
+                queue_side(r, m, 3 * t, False)
+            else:
+                check_subsegment(r, m, 3 * t)
 
 
 @cython.cfunc

@@ -305,7 +305,7 @@ def _split_at_apex(r: Refiner, m: Mesh, segs: Subsegments, e: Index, f: Index, t
         if triangles:
             test_triangle(r, m, segs, r.fan[i])
     if flips:  # (without flips the rim is the far triangle's, as before: c faces none of it anew)
-        test_fan(r, m, segs, made, False)
+        test_fan(r, m, segs, made, False, False)
     check_subsegment(r, m, h0)
     check_subsegment(r, m, h1)
     trace_row(r, T_SEGMENT, made0 + 2 * flips, 1 + made0 + 2 * flips, 0, r.hsize)
@@ -568,7 +568,7 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
     m.work[C_STEINER] += 1
     if r.budget > 0:
         r.budget -= 1
-    test_fan(r, m, segs, nb, triangles)
+    test_fan(r, m, segs, nb, triangles, False)
     # the halves themselves
     if eb >= 0:
         check_subsegment(r, m, eb)
@@ -867,7 +867,7 @@ def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cyth
     m.work[C_STEINER] += 1
     if r.budget > 0:
         r.budget -= 1
-    test_fan(r, m, segs, nb, True)
+    test_fan(r, m, segs, nb, True, True)  # (the point is in no rim subsegment's lens: tested above)
     trace_row(r, T_OFFCENTER if off else T_CIRCUMCENTER, nb, n, steps, r.hsize)
     return DONE
 
