@@ -154,8 +154,9 @@ DEFECTS += [
     Defect(
         "crossing-beside-an-end",
         "a segment that passes within rounding of another segment's endpoint, as crossing-segments draws them: "
-        "segments/crossing.py takes the crossing as that endpoint, where Triangle places a crossing vertex of "
-        "its own one ulp beside it (the crossing of (0.0109, 4.8e-288) (3.4332275390625e-05, 0.77990420891580"
+        "ours and Triangle disagree on whether the crossing is that endpoint or a vertex of its own beside it, "
+        "either way (7 points, 3 segments under pQ and pcQ: ours 9 vertices, Triangle 8). segments/crossing.py "
+        "takes the endpoint where Triangle places its own crossing vertex one ulp beside it (the crossing of (0.0109, 4.8e-288) (3.4332275390625e-05, 0.77990420891580"
         "24) with a segment through it: Triangle's vertex (3.433227539062652e-05, 0.7799042089158023)). Then "
         "the segments' pieces differ and carving keeps a triangle of area 2.4e-4 outside the domain under pQ "
         "(regressions/crossing-beside-an-end-area.json), or, where the crossing rounds onto the endpoint "
