@@ -246,6 +246,8 @@ def grow_refiner(ms: MeshState, r: Refiner) -> None:
             setattr(r, name, _widened(getattr(r, name), heap, 0))
     if r.ghost.shape[0] < r.nghost + need:  # a rejected insertion's entries (queues.queue_push_ghost)
         r.ghost = _widened(r.ghost, 2 * r.ghost.shape[0] + need, 0)
+    if r.born.shape[0] < slots:  # kept between steps (ghosts.note_born)
+        r.born = _widened(r.born, slots, 0)
     enc = r.enc.shape[0]
     if enc < r.enc_live + need:  # a pool: slots keep their places
         r.enc = _widened(r.enc, 2 * enc + need, 0)

@@ -26,7 +26,9 @@ from cython.cimports.instrument.core.subsegments import Subsegments
 from cython.cimports.instrument.counters import C_CREATED, C_DELETED, C_DELETED_VERTEX, C_INCIRCLE
 from cython.cimports.instrument.refine.cavity import inherit, inherited
 from cython.cimports.instrument.refine.criteria import test_triangle
-from cython.cimports.instrument.refine.queues import queue_used
+from cython.cimports.instrument.refine.ghosts import deletion_freed, deletion_ghosts
+from cython.cimports.instrument.refine.order import TRIANGLE
+from cython.cimports.instrument.refine.queues import ghost_room, queue_used
 from cython.cimports.instrument.refine.star_delaunay import delaunay_star
 from cython.cimports.instrument.refine.state import T_DELETED, Refiner, trace_row
 
@@ -172,9 +174,11 @@ def delete_free_vertex(r: Refiner, m: Mesh, segs: Subsegments, e0: Index) -> cyt
             break
     if d < 3:
         return FAILED
-    if spare_triangles(m) < d or queue_used(r) + d + 2 > r.hkey.shape[0]:
+    if spare_triangles(m) < d or queue_used(r) + d + 2 > r.hkey.shape[0] or not ghost_room(r, d):
         r.need = max(r.need, d + 2)
         return NEED_ROOM
+    if r.cfg.strategy == TRIANGLE:  # Triangle's entries of the star wait for v's vertex record
+        deletion_ghosts(r, m, v, tris, d)
     # the polygon w0 .. w[d-1]; base w0 -> w1, chain w0, w[d-1], ..., w1
     half: Index = w.shape[0] // 2
     chain: cython.longlong[:] = w[half:]
@@ -216,6 +220,8 @@ def delete_free_vertex(r: Refiner, m: Mesh, segs: Subsegments, e0: Index) -> cyt
     slot[chain[0]] = d
     for i in range(1, d):
         slot[chain[i]] = d - i
+    if r.cfg.strategy == TRIANGLE:  # the star's records it frees (the base's apex at place j)
+        deletion_freed(r, m, slot[m.corner[3 * r.fan[0]]], d)
     # the values by apex (see the docstring); fill triangles are (apex, base org, base dest)
     inherit(m, r.fan[0], area0, attr0)  # the base triangle (the fill makes it first)
     k: Index

@@ -2,6 +2,11 @@
 from instrument.core.mesh cimport Index, Mesh
 from instrument.refine.state cimport Refiner
 
-cpdef bint rejected_fan_records(Refiner r, Mesh m, Index e, Index nb, bint on_edge) noexcept nogil
+cpdef bint rejected_fan_records(Refiner r, Mesh m, Index e, bint on_edge, Index nb) noexcept nogil
 cpdef void rejected_bounds(Refiner r, Mesh m, Index e, bint on_edge) noexcept nogil
-cpdef void revive_ghosts(Refiner r, Mesh m, Index e, Index nb) noexcept nogil
+cpdef bint insertion_records(Refiner r, Mesh m, Index e, bint on_edge, Index nb) noexcept nogil
+cpdef void revive_ghosts(Refiner r, Mesh m, bint ok, Index nb) noexcept nogil
+cpdef void note_born(Refiner r, Mesh m, bint ok, Index nb, Index first) noexcept nogil
+cpdef void requeued(Refiner r, Index t) noexcept nogil
+cpdef void deletion_ghosts(Refiner r, Mesh m, Index v, long long[:] tris, Index d) noexcept nogil
+cpdef void deletion_freed(Refiner r, Mesh m, Index j, Index d) noexcept nogil

@@ -34,6 +34,14 @@ mesh does not change between a rejection and the next vertex but for
 Chew's deletions, which drop the ghosts: queues.ghosts_orphaned), or by
 NEW_FIRST / NEW_SECOND for a split's new records; orientations are
 relative to ours' slot layout, the same at both times.
+
+Chew's deletions free vertex records too: the subsegment's split point
+takes the deleted vertex's, and an entry of the deleted vertex's star is
+served again if the split remakes its triangle in that entry's record and
+orientation (deletion_ghosts, deletion_freed).  Only entries whose records
+their insertion made are modelled there: a new record's orientation is
+Triangle's own (note_born), where a kept one's is only relative to ours'
+slot layout of a triangle the deletion has removed.
 """
 
 from __future__ import annotations
@@ -41,7 +49,7 @@ from __future__ import annotations
 import cython
 from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, Index, Mesh, lnext, lprev
 from cython.cimports.instrument.refine.cavity import flip_bound
-from cython.cimports.instrument.refine.queues import ghost_pending, ghost_revive
+from cython.cimports.instrument.refine.queues import entry_to_ghost, entry_waiting, ghost_pending, ghost_revive, ghosts_orphaned
 from cython.cimports.instrument.refine.state import Refiner
 
 #: The new records of a rejected 1 -> 3 split: the one on the split
@@ -108,30 +116,31 @@ def _lineage(r: Refiner, m: Mesh, top: Index, nb: Index) -> cython.bint:
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
-def _split_stack(r: Refiner, m: Mesh, e: Index, on_edge: cython.bint) -> Index:
-    """Lay Triangle's split of a point inside edge ``e``'s triangle (1 -> 3)
-    or on edge ``e`` (org o -> dest d: 2 -> 4, 1 -> 2 without a twin) on
-    ``r.lineage``, the first to flip on top; returns the stack's height."""
+def _split_lineage(r: Refiner, m: Mesh, e: Index, on_edge: cython.bint, first: Index, second: Index) -> Index:
+    """Put Triangle's split of the located edge ``e`` on ``r.lineage``
+    (first to flip on top) and return its height: a 1 -> 3 split of e's
+    triangle (``on_edge`` False), or a 2 -> 4 split of edge e (1 -> 2
+    without a twin).  ``first`` and ``second`` name the new records in the
+    order the split takes them from the pool."""
     t: Index = e // 3
+    tw: Index = m.twin[e]
+    top: Index = 0
     if not on_edge:
-        # e (org -> dest) keeps its record, dest -> apex and apex -> org get
-        # the new ones
+        # e (org -> dest) keeps its record, dest -> apex gets the first new
+        # one, apex -> org the second
         r.lineage[0, 0] = lprev(e)
-        r.lineage[0, 1] = NEW_SECOND
+        r.lineage[0, 1] = second
         r.lineage[0, 2] = 0
         r.lineage[1, 0] = lnext(e)
-        r.lineage[1, 1] = NEW_FIRST
+        r.lineage[1, 1] = first
         r.lineage[1, 2] = 0
         r.lineage[2, 0] = e
         r.lineage[2, 1] = t
         r.lineage[2, 2] = e - 3 * t
         return 3
-    tw: Index = m.twin[e]
-    first: Index = FREED_LAST  # the new records, last freed first
-    second: Index = NEW_FIRST + NEW_SECOND - FREED_LAST
-    # d -> apex keeps e's record one orientation up, apex -> o and
-    # o -> apex' get new ones, apex' -> d keeps the twin's two up
-    top: Index = 0
+    # on e (o -> d): d -> apex keeps e's record one orientation up, o ->
+    # apex' takes the first new one, apex -> o the second (the first without
+    # a twin), apex' -> d keeps the twin's two up
     if tw != NO_EDGE:
         r.lineage[0, 0] = lprev(tw)
         r.lineage[0, 1] = tw // 3
@@ -149,15 +158,41 @@ def _split_stack(r: Refiner, m: Mesh, e: Index, on_edge: cython.bint) -> Index:
     return top + 2
 
 
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _rejected_split(r: Refiner, m: Mesh, e: Index, on_edge: cython.bint) -> Index:
+    """``_split_lineage`` for a point about to be rejected, its new records
+    named as ``rejected_fan_records`` names them."""
+    if on_edge and m.twin[e] == NO_EDGE:
+        return _split_lineage(r, m, e, True, FREED_LAST, FREED_LAST)
+    return _split_lineage(r, m, e, on_edge, NEW_FIRST, NEW_SECOND)
+
+
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
-def rejected_fan_records(r: Refiner, m: Mesh, e: Index, nb: Index, on_edge: cython.bint) -> cython.bint:
+def rejected_fan_records(r: Refiner, m: Mesh, e: Index, on_edge: cython.bint, nb: Index) -> cython.bint:
     """``r.fan_rec[:nb]``: the records and orientations of the fan of a
-    point inside edge ``e``'s triangle (Triangle's located handle) or on
-    edge ``e``, and ``r.flips`` its flips (the cavity marked, the rim in
-    order).  False if they cannot be told."""
-    return _lineage(r, m, _split_stack(r, m, e, on_edge), nb)
+    point inside edge ``e``'s triangle, or on edge ``e`` (``on_edge``;
+    Triangle's located handle; the cavity marked, the rim in order).  False
+    if they cannot be told.
+
+    The point is about to be rejected: the ghosts waiting already (an
+    earlier rejected point's, for the same vertex record) see the split
+    take the two records that point's undo freed, and its own undo free
+    them again the other way round (the second one taken is handed out
+    first next: FREED_LAST), so their names swap.  (Without a twin the
+    split on the edge takes one record, and gives it back: nothing swaps.)"""
+    g: Index = r.nghost - 1
+    k: Index
+    if not on_edge or m.twin[e] != NO_EDGE:
+        while g >= 0 and ghost_pending(r, m, g):
+            k = r.ghost[g, 3]
+            if k == NEW_FIRST or k == NEW_SECOND:
+                r.ghost[g, 3] = NEW_FIRST + NEW_SECOND - k
+            g -= 1
+    return _lineage(r, m, _rejected_split(r, m, e, on_edge), nb)
 
 
 @cython.ccall
@@ -179,7 +214,7 @@ def rejected_bounds(r: Refiner, m: Mesh, e: Index, on_edge: cython.bint) -> cyth
     fresh = cython.declare(cython.double[2])
     fresh[0] = -1.0
     fresh[1] = -1.0
-    top: Index = _split_stack(r, m, e, on_edge)
+    top: Index = _rejected_split(r, m, e, on_edge)
     for k in range(top):
         if r.lineage[k, 1] < 0:
             fresh[NEW_FIRST - r.lineage[k, 1]] = m.area_bound[r.lineage[k, 0] // 3]
@@ -200,15 +235,27 @@ def rejected_bounds(r: Refiner, m: Mesh, e: Index, on_edge: cython.bint) -> cyth
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
-def revive_ghosts(r: Refiner, m: Mesh, e: Index, nb: Index) -> cython.void:
-    """The vertex about to be made splits subsegment edge ``e`` (org o ->
-    dest d; the cavity marked, the rim in order from d): revive the ghosts
-    waiting for it whose record and orientation its fan gives their
-    triangle again, and drop the others."""
+def insertion_records(r: Refiner, m: Mesh, e: Index, on_edge: cython.bint, nb: Index) -> cython.bint:
+    """``r.fan_rec[:nb]``: the records and orientations of the fan of the
+    vertex about to be made inside edge ``e``'s triangle, or on edge ``e``
+    (``on_edge``: org o -> dest d, a subsegment's split point or a Steiner
+    point on an edge; the rim in order from d), the cavity marked; its new
+    records named as the pool hands them out (the last freed first).
+    False if they cannot be told."""
+    first: Index = FREED_LAST
+    second: Index = NEW_FIRST + NEW_SECOND - FREED_LAST
+    return _lineage(r, m, _split_lineage(r, m, e, on_edge, first, second), nb)
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def revive_ghosts(r: Refiner, m: Mesh, ok: cython.bint, nb: Index) -> cython.void:
+    """The vertex about to be made takes the vertex record the ghosts wait
+    for: revive those whose record and orientation its fan gives their
+    triangle again (``r.fan_rec[:nb]``, if ``ok``: insertion_records), and
+    drop the others."""
     g: Index = r.nghost - 1
-    if g < 0 or not ghost_pending(r, m, g):
-        return
-    ok: cython.bint = _lineage(r, m, _split_stack(r, m, e, True), nb)
     live: cython.bint
     j: Index
     while g >= 0 and ghost_pending(r, m, g):
@@ -220,4 +267,118 @@ def revive_ghosts(r: Refiner, m: Mesh, e: Index, nb: Index) -> cython.void:
                     live = True
                     break
         ghost_revive(r, g, live)
+        g -= 1
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def note_born(r: Refiner, m: Mesh, ok: cython.bint, nb: Index, first: Index) -> cython.void:
+    """The fan ``r.fan[:nb]`` is made and tested; the bucket log's entries
+    from ``first`` on are the ones its test queued: remember, per slot,
+    each one's entry and, where the insertion made the triangle's record
+    (``r.fan_rec``, if ``ok``), the entry's orientation in it, which a
+    deletion of the vertex may need (deletion_ghosts)."""
+    t: Index
+    j: Index
+    for i in range(first, r.log_length):
+        t = r.htri[i]
+        if t < 0:
+            continue
+        r.born[t, 0] = i
+        r.born[t, 1] = -1
+        r.born[t, 2] = m.stamp[t]
+        if ok:
+            for j in range(nb):
+                if r.fan[j] == t:
+                    if r.fan_rec[j, 0] < 0:
+                        r.born[t, 1] = r.fan_rec[j, 1]
+                    break
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def requeued(r: Refiner, t: Index) -> cython.void:
+    """Triangle ``t`` was queued again (the last bucket log entry) after
+    its Steiner point was rejected, in the record and orientation of the
+    entry served: that is the entry its insertion made now."""
+    if r.born[t, 0] >= 0 and r.born[t, 0] < r.log_length and r.htri[r.born[t, 0]] == t:
+        r.born[t, 0] = r.log_length - 1
+
+
+#: A deletion ghost's record until the polygon's triangulation tells
+#: whether it is freed: STAR_PLACE - i for the star's i-th triangle.
+STAR_PLACE = cython.declare(cython.longlong, -100)
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def deletion_ghosts(r: Refiner, m: Mesh, v: Index, tris: cython.longlong[:], d: Index) -> cython.void:
+    """Chew's rule is about to delete free vertex ``v``, whose star is
+    ``tris[:d]`` (``tris[i]`` = (v, w[i], w[i+1]), counter-clockwise;
+    ``tris[0]`` on the subsegment).  Triangle's queue entries hold vertex
+    records: an entry of a triangle of the star queued as ``v``'s
+    insertion made it reads (w[i], w[i+1], v) and matches again if the
+    next vertex made (the subsegment's split point, which takes ``v``'s
+    vertex record) remakes (w[i], w[i+1], itself) in the same record and
+    orientation.  The deletion frees two of the star's records
+    (deletion_freed); those entries turn into ghosts, in their places, of
+    the star triangles whose records their own insertion made (their
+    orientations are Triangle's, note_born): ``v``'s, or a later vertex's
+    (``v`` then a corner of the entry's base edge).  The ghosts waiting for an
+    earlier vertex are dropped: the next vertex takes ``v``'s record (the
+    last freed), and only the first vertex made after is modelled."""
+    ghosts_orphaned(r, m)
+    t: Index
+    i: Index
+    g: Index
+    c: Index
+    for k in range(1, d):
+        t = tris[k]
+        i = r.born[t, 0]
+        if (r.born[t, 1] < 0 or r.born[t, 2] != m.stamp[t]
+                or not entry_waiting(r, m, i, t) or r.nghost >= r.ghost.shape[0]):
+            continue
+        # the entry reads (corner 1, corner 2, corner 0) in orientation
+        # born[t, 1]; as a ghost it reads (w[k], w[k+1], v), the same
+        # triangle from v: one orientation up per corner v is past corner 0
+        c = 0
+        while c < 3 and m.corner[3 * t + c] != v:
+            c += 1
+        if c == 3:
+            continue
+        g = r.nghost
+        r.nghost = g + 1
+        r.ghost[g, 0] = m.corner[3 * t + (c + 1) % 3]
+        r.ghost[g, 1] = m.corner[3 * t + (c + 2) % 3]
+        r.ghost[g, 2] = m.nvert
+        r.ghost[g, 3] = STAR_PLACE - k
+        r.ghost[g, 4] = (r.born[t, 1] + c) % 3
+        entry_to_ghost(r, i, g)
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def deletion_freed(r: Refiner, m: Mesh, j: Index, d: Index) -> cython.void:
+    """The deletion's polygon joined its base to the star's ``j``-th
+    vertex: Triangle flips the star's edges away until the vertex has three
+    triangles left, each flip keeping the vertex in the later triangle's
+    record (counter-clockwise), so the two that go with it are the last
+    triangle of each side, (v, w[j-1], w[j]) and (v, w[d-1], w[0]), the
+    first freed last (the subsegment's split takes it first).  Their
+    ghosts wait under those names; the others are dropped."""
+    g: Index = r.nghost - 1
+    k: Index
+    while g >= 0 and ghost_pending(r, m, g):
+        k = STAR_PLACE - r.ghost[g, 3]
+        if r.ghost[g, 3] <= STAR_PLACE:
+            if k == j - 1:
+                r.ghost[g, 3] = FREED_LAST
+            elif k == d - 1:
+                r.ghost[g, 3] = NEW_FIRST + NEW_SECOND - FREED_LAST
+            else:
+                r.ghost[g, 0] = -1
         g -= 1

@@ -13,6 +13,9 @@ cpdef bint ghost_pending(Refiner r, Mesh m, Index g) noexcept nogil
 cpdef Index ghost_slot(Refiner r, Mesh m, Index g) noexcept nogil
 cpdef void ghost_revive(Refiner r, Index g, bint live) noexcept nogil
 cpdef void ghosts_orphaned(Refiner r, Mesh m) noexcept nogil
+cpdef void ghosts_made(Refiner r, Mesh m, Index v) noexcept nogil
+cpdef bint entry_waiting(Refiner r, Mesh m, Index i, Index t) noexcept nogil
+cpdef void entry_to_ghost(Refiner r, Index i, Index g) noexcept nogil
 
 
 # Defined here so that the kernels inline them (every bad triangle is

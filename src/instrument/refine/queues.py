@@ -148,6 +148,8 @@ def queue_compact(r: Refiner, m: Mesh) -> cython.void:
                 ng += 1
             elif m.stamp[r.htri[i]] != r.hstamp[i]:
                 continue
+            elif r.born[r.htri[i], 0] == i:  # the entry its insertion queued it with moves
+                r.born[r.htri[i], 0] = n
             r.hkey[n] = r.hkey[i]
             r.htri[n] = r.htri[i]
             r.hstamp[n] = r.hstamp[i]
@@ -230,12 +232,14 @@ def ghost_pending(r: Refiner, m: Mesh, g: Index) -> cython.bint:
 def ghost_slot(r: Refiner, m: Mesh, g: Index) -> Index:
     """The live triangle ghost row ``g`` matches now, or -1: the row was
     revived (its record holds the triangle again, ghosts.revive_ghosts) and
-    the triangle with edge org -> dest and its vertex as apex is still there."""
+    the triangle with edge org -> dest and its vertex as apex is still the
+    one it revived (the stamp ghosts_made noted: a triangle split and made
+    again, by a deletion say, is in another record)."""
     if r.ghost[g, 0] < 0 or r.ghost[g, 4] != GHOST_LIVE:
         return -1
     v: Index = r.ghost[g, 2]
     e: Index = find_edge(m, r.ghost[g, 0], r.ghost[g, 1])
-    if e < 0 or m.corner[e] != v:
+    if e < 0 or m.corner[e] != v or m.stamp[e // 3] != r.ghost[g, 3]:
         return -1
     return e // 3
 
@@ -248,8 +252,47 @@ def ghost_revive(r: Refiner, g: Index, live: cython.bint) -> cython.void:
     triangle again (``live``: served when popped), or not (dropped)."""
     if live:
         r.ghost[g, 4] = GHOST_LIVE
+        r.ghost[g, 3] = -1  # its triangle's stamp: ghosts_made
     else:
         r.ghost[g, 0] = -1
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def ghosts_made(r: Refiner, m: Mesh, v: Index) -> cython.void:
+    """Vertex ``v``'s fan is made: note the stamps of the triangles that
+    the ghosts it revived stand for (the last rows, waiting for ``v``)."""
+    g: Index = r.nghost - 1
+    e: Index
+    while g >= 0 and r.ghost[g, 2] == v:
+        if r.ghost[g, 0] >= 0 and r.ghost[g, 4] == GHOST_LIVE and r.ghost[g, 3] == -1:
+            e = find_edge(m, r.ghost[g, 0], r.ghost[g, 1])
+            if e >= 0 and m.corner[e] == v:
+                r.ghost[g, 3] = m.stamp[e // 3]
+            else:
+                r.ghost[g, 0] = -1
+        g -= 1
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def entry_waiting(r: Refiner, m: Mesh, i: Index, t: Index) -> cython.bint:
+    """Is bucket log entry ``i`` a queued, unserved entry of triangle
+    ``t`` as it is now?  (``i`` may be any number: a slot's record of it
+    outlives the entry, ghosts.note_born.)"""
+    return (0 <= i < r.log_length and r.htri[i] == t and r.hstamp[i] == m.stamp[t]
+            and r.hseq[i] != POPPED)
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def entry_to_ghost(r: Refiner, i: Index, g: Index) -> cython.void:
+    """Bucket log entry ``i`` now waits, in its place, as ghost row ``g``."""
+    r.htri[i] = cython.cast(cython.int, -1 - g)
+    r.hstamp[i] = 0
 
 
 @cython.ccall

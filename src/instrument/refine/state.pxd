@@ -74,6 +74,9 @@ cdef class Refiner:
     cdef public long long[:, ::1] fan_rec  # ghosts.py: each fan triangle's record and orientation
     cdef public long long[:, ::1] flips    # ghosts.py: the two records of each flip, in Triangle's order
     cdef public Index nflips         # rows in use
+    # ghosts.py: per slot, the entry its insertion queued it with (log index), that entry's
+    # orientation in its record if the insertion made the record (else -1), and the slot's stamp then
+    cdef public long long[:, ::1] born
     # the trace (empty: off)
     cdef public long long[:, ::1] trace  # rows: kind, created, deleted, walk steps, queue length
     cdef public Index ntrace

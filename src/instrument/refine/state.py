@@ -89,6 +89,8 @@ class Refiner:
         self.lineage = np.empty((slots, 3), dtype=np.int64)
         self.fan_rec = np.empty((slots, 2), dtype=np.int64)
         self.flips = np.empty((slots, 2), dtype=np.int64)
+        # kept between steps, read only where its checks hold (ghosts.note_born)
+        self.born = np.zeros((slots, 3), dtype=np.int64)
         self.trace = np.zeros((1024 if trace else 0, 5), dtype=np.int64)
         self.restart(cfg, budget)
 
