@@ -82,12 +82,20 @@ DEFECTS += [
         "(8.49998e-05, 0.250093) is rejected and the subsegment is split at (8.91089e-05, 0.250089) instead, "
         "Triangle splits the triangle (6.93458e-05, 0.250132) (6.99588e-05, 0.250101) (0.000100017, 0.250100), "
         "whose angles are 43, 93 and 44 degrees (not bad) and which its -VVV never reports queueing: a stale "
-        "record served, which ghosts.py models: regressions/points-collinear-stale-record-size.json passes)",
+        "record served, which ghosts.py models: regressions/points-collinear-stale-record-size.json passes)."
+        " (3) Under -Y/-YY at 34 degrees and above, where most Steiner points are rejected and nothing is split "
+        "after a rejection, the left-out revival decides the size: a mesh of 11 vertices and 1 segment under "
+        "rq34YY (regressions/rq34YY-free-vertex-revival-size.json, campaign seed 2901) gives 62 vertices against "
+        "Triangle's 37 (bound 40.7); it parts at split 9, where Triangle serves the entry (2601178547.58, 0) "
+        "(2604742050.17, 3700256.34766) (9313254.58906, 7730428.29807) that a rejected point queued, revived when "
+        "the next circumcenter (2597211377.12, 7386581.77468) took that point's vertex record",
         lambda c, f, n: f.kind == "size" and (
             # a corpus or sample input, within 5 % of the rule's bound
             (c.family == "realworld" and n.get("vertices", {}).get("ours", 0) <= 1.05 * n.get("size_bound", 0))
             # point sets above 34 degrees (no segments: the hull's splits and rejections alone)
-            or (read_switches(c.switches).angle >= 34 and not np.size(c.input.get("segments", ())))),
+            or (read_switches(c.switches).angle >= 34 and not np.size(c.input.get("segments", ())))
+            # -Y/-YY above 34 degrees: rejections without splits, revived at the next free vertex
+            or (read_switches(c.switches).angle >= 34 and read_switches(c.switches).Y > 0)),
     ),
 ]
 
