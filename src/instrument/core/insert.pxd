@@ -10,3 +10,4 @@ cpdef void lawson_in_place(Mesh m, Index h) noexcept nogil
 cpdef bint should_flip(Mesh m, Index e) noexcept nogil
 cpdef Index star_edges(Mesh m, Index t, long long[::1] stack) noexcept nogil
 cpdef Index lawson(Mesh m, long long[::1] stack, Index n) noexcept nogil
+cpdef Index make_delaunay(Mesh m, long long[::1] stack, unsigned char[::1] queued) noexcept nogil

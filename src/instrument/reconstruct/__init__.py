@@ -102,6 +102,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..core import insert
 from ..core.mesh import NO_EDGE, Mesh
 from ..core.navigate import build_vertex_edges
 from ..core.subsegments import Subsegments
@@ -290,4 +291,4 @@ def _segments(ms: MeshState, inp: dict, new_id: np.ndarray, corners: np.ndarray,
 def make_delaunay(ms: MeshState) -> int:
     """Step 5: flip the mesh to a constrained Delaunay one; returns the flips."""
     edges = 3 * ms.mesh.triangle_capacity
-    return int(link.make_delaunay(ms.mesh, np.zeros(edges, dtype=np.int64), np.zeros(edges, dtype=np.uint8)))
+    return int(insert.make_delaunay(ms.mesh, np.zeros(edges, dtype=np.int64), np.zeros(edges, dtype=np.uint8)))

@@ -17,5 +17,4 @@ cpdef int link_triangles(int[::1] corner, double[:, ::1] xy, long long[::1] star
 cpdef Index attach_segments(Mesh m, Subsegments segs, long long[::1] start, long long[::1] order,
                             long long[:, ::1] rows, int[::1] in_marker, long long[::1] unmatched) noexcept nogil
 cpdef bint leaves_mesh(Mesh m, Index a, Index b) noexcept nogil
-cpdef Index make_delaunay(Mesh m, long long[::1] stack, unsigned char[::1] queued) noexcept nogil
 cpdef Index spread_origin(Mesh m, long long[::1] origin) noexcept nogil

@@ -4,8 +4,9 @@
 ``link_triangles`` checks the given triangles and links neighbours by
 matching each directed edge with its reverse; ``attach_segments`` makes the
 input segments that are edges subsegments; ``leaves_mesh`` tells whether a
-segment that is not an edge lies in the mesh; ``make_delaunay`` flips the
-mesh to a constrained Delaunay one; ``spread_origin`` gives the triangles
+segment that is not an edge lies in the mesh (core/insert.py's
+``make_delaunay`` then flips the mesh to a constrained Delaunay one);
+``spread_origin`` gives the triangles
 segment insertion made an input triangle to descend from.
 """
 
@@ -223,54 +224,6 @@ def leaves_mesh(m: Mesh, a: Index, b: Index) -> cython.bint:
                 v = y
                 break
     return True
-
-
-@cython.ccall
-@cython.nogil
-@cython.exceptval(check=False)
-def make_delaunay(m: Mesh, stack: cython.longlong[::1], queued: cython.uchar[::1]) -> Index:
-    """Flip every non-constrained edge that is not locally Delaunay (Lawson).
-
-    ``stack`` and ``queued`` have one entry per edge slot; each edge is on the
-    stack at most once.  Returns the number of flips."""
-    n: Index = 0
-    e: Index
-    tw: Index
-    for t in range(m.nslot):
-        if m.stamp[t] > 0:
-            for k in range(3):
-                e = 3 * t + k
-                tw = m.twin[e]
-                if tw > e and m.seg[e] == NO_SEG:  # each interior edge once
-                    stack[n] = e
-                    queued[e] = 1
-                    n += 1
-    flips: Index = 0
-    t1: Index
-    t2: Index
-    f: Index
-    sides = cython.declare(Index[4])
-    while n > 0:
-        n -= 1
-        e = stack[n]
-        queued[e] = 0
-        if m.stamp[e // 3] <= 0 or not should_flip(m, e):
-            continue
-        t1 = flip(m, e)
-        flips += 1
-        t2 = m.twin[3 * t1 + 1] // 3
-        # the four sides of the flipped quad (the new diagonal is fine)
-        sides[0] = 3 * t1
-        sides[1] = 3 * t1 + 2
-        sides[2] = 3 * t2
-        sides[3] = 3 * t2 + 1
-        for k in range(4):
-            f = sides[k]
-            if not queued[f] and m.twin[f] != NO_EDGE and m.seg[f] == NO_SEG:
-                queued[f] = 1
-                stack[n] = f
-                n += 1
-    return flips
 
 
 @cython.ccall

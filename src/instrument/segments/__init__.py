@@ -11,6 +11,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..carve.infect import start_hull_edge
+from ..core.insert import make_delaunay
 from ..core.navigate import build_vertex_edges
 from ..core.status import DONE, FAILED, NEED_BUFFER
 from ..counters import C_STEINER
@@ -64,10 +65,20 @@ def recover_segments(ms: MeshState, rows: np.ndarray, seg_markers: np.ndarray) -
     while True:
         status = insert_segments(m, ms.segs, work)
         if status == DONE:
-            if ms.work[C_STEINER] and count_inverted(m):
-                # rounded intersection points of nearly concurrent segments
-                # can fold the mesh; never hand back a folded mesh
-                raise TriangleError(TOO_CLOSE)
+            if ms.work[C_STEINER]:
+                if count_inverted(m):
+                    # rounded intersection points of nearly concurrent segments
+                    # can fold the mesh; never hand back a folded mesh
+                    raise TriangleError(TOO_CLOSE)
+                # A crossing rounded beside another segment's endpoint can
+                # leave an edge that recovery's local repairs do not reach
+                # not locally Delaunay (the square with segments through
+                # (0.0175, 0.1453) and the origin, under pQ:
+                # regressions/crossing-beside-an-end-delaunay.json): one
+                # Lawson pass over the whole mesh, which changes nothing in
+                # a mesh that is constrained Delaunay already.
+                edges = 3 * m.triangle_capacity
+                make_delaunay(m, np.zeros(edges, dtype=np.int64), np.zeros(edges, dtype=np.uint8))
             return
         # a segment cannot cross more triangles than there are
         lost = status == NEED_BUFFER and work.buf.shape[0] > 8 * (m.triangle_capacity + 64)
