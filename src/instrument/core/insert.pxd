@@ -11,3 +11,4 @@ cpdef bint should_flip(Mesh m, Index e) noexcept nogil
 cpdef Index star_edges(Mesh m, Index t, long long[::1] stack) noexcept nogil
 cpdef Index lawson(Mesh m, long long[::1] stack, Index n) noexcept nogil
 cpdef Index make_delaunay(Mesh m, long long[::1] stack, unsigned char[::1] queued) noexcept nogil
+cpdef bint splits_cleanly(Mesh m, Index c, double px, double py) noexcept nogil

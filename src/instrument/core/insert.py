@@ -539,3 +539,32 @@ def make_delaunay(m: Mesh, stack: cython.longlong[::1], queued: cython.uchar[::1
                 stack[n] = f
                 n += 1
     return flips
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def splits_cleanly(m: Mesh, c: Index, px: cython.double, py: cython.double) -> cython.bint:
+    """Would splitting edge ``c`` (``r -> l``, apex ``b``; beyond it apex
+    ``x``) at the point ``p`` leave four counter-clockwise triangles ``(p,
+    l, b)``, ``(b, r, p)``, ``(p, x, l)``, ``(r, x, p)``?  Whether ``p`` is
+    on ``c``'s line does not matter (a rounded crossing point, a subsegment's
+    split point rounded off its line): only that it lies inside the
+    quadrilateral the two triangles make, as seen from its corners (then
+    Lawson's flips keep every triangle counter-clockwise).  Segment
+    recovery's crossings and refinement's in-place splits both ask it."""
+    xy = m.xy
+    r: Index = m.corner[lnext(c)]
+    l: Index = m.corner[lprev(c)]
+    b: Index = m.corner[c]
+    m.work[C_ORIENT] += 2
+    if not (orient2d(px, py, xy[l, 0], xy[l, 1], xy[b, 0], xy[b, 1]) > 0.0
+            and orient2d(xy[b, 0], xy[b, 1], xy[r, 0], xy[r, 1], px, py) > 0.0):
+        return False
+    tw: Index = m.twin[c]
+    if tw == NO_EDGE:
+        return True
+    x: Index = m.corner[tw]
+    m.work[C_ORIENT] += 2
+    return (orient2d(px, py, xy[x, 0], xy[x, 1], xy[l, 0], xy[l, 1]) > 0.0
+            and orient2d(xy[r, 0], xy[r, 1], xy[x, 0], xy[x, 1], px, py) > 0.0)

@@ -3,6 +3,5 @@ from instrument.core.mesh cimport Index, Mesh
 from instrument.core.subsegments cimport Subsegments
 from instrument.refine.state cimport Refiner
 
-cpdef bint splits_cleanly(Mesh m, Index e, double px, double py) noexcept nogil
 cpdef void split_in_place(Refiner r, Mesh m, Subsegments segs, Index e, double px, double py,
                           Index e0, Index e1, double split) noexcept nogil

@@ -26,7 +26,7 @@ import cython
 from cython.cimports.instrument.core.insert import flip_in_place, split_edge_in_place
 from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, V_SEGMENT, Index, Mesh, lnext, lprev
 from cython.cimports.instrument.core.navigate import find_edge, remember_corners
-from cython.cimports.instrument.core.predicates import incircle, orient2d
+from cython.cimports.instrument.core.predicates import incircle
 from cython.cimports.instrument.core.subsegments import Subsegments, new_record
 from cython.cimports.instrument.counters import C_INCIRCLE, C_SEGMENT_SPLIT, C_STEINER
 from cython.cimports.instrument.refine.cavity import inherit, inherited, new_vertex
@@ -36,31 +36,6 @@ from cython.cimports.instrument.refine.state import T_SEGMENT, Refiner, trace_ro
 #: Triangle's orientation 0 of a record is edge 0 of a slot during
 #: refinement (refine.run turns every triangle so)
 ZERO = cython.declare(Index, 0)
-
-
-@cython.ccall
-@cython.nogil
-@cython.exceptval(check=False)
-def splits_cleanly(m: Mesh, e: Index, px: cython.double, py: cython.double) -> cython.bint:
-    """Would splitting edge ``e`` (``r -> l``, apex ``b``; beyond it apex
-    ``x``) at the point ``p`` leave four counter-clockwise triangles ``(p,
-    l, b)``, ``(b, r, p)``, ``(p, x, l)``, ``(r, x, p)``?  The split point
-    of a subsegment is rounded off its line: what matters is only that it
-    lies inside the quadrilateral of the two triangles, as seen from its
-    corners (then Lawson's flips keep every triangle counter-clockwise)."""
-    xy = m.xy
-    r: Index = m.corner[lnext(e)]
-    l: Index = m.corner[lprev(e)]
-    b: Index = m.corner[e]
-    if not (orient2d(px, py, xy[l, 0], xy[l, 1], xy[b, 0], xy[b, 1]) > 0.0
-            and orient2d(xy[b, 0], xy[b, 1], xy[r, 0], xy[r, 1], px, py) > 0.0):
-        return False
-    tw: Index = m.twin[e]
-    if tw == NO_EDGE:
-        return True
-    x: Index = m.corner[tw]
-    return (orient2d(px, py, xy[x, 0], xy[x, 1], xy[l, 0], xy[l, 1]) > 0.0
-            and orient2d(xy[r, 0], xy[r, 1], xy[x, 0], xy[x, 1], px, py) > 0.0)
 
 
 @cython.cfunc

@@ -23,7 +23,7 @@ from __future__ import annotations
 import numpy as np
 
 import cython
-from cython.cimports.instrument.core.insert import flip
+from cython.cimports.instrument.core.insert import flip, splits_cleanly
 from cython.cimports.instrument.core.locate import LOC_BLOCKED, LOC_FAILED, LOC_INSIDE, LOC_ON_EDGE, LOC_ON_VERTEX, line_walk, precise_walk
 from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, V_FREE, V_SEGMENT, Index, Mesh, is_ghost, kill_triangle, lnext, lprev
 from cython.cimports.instrument.core.navigate import edge_around, find_edge, remember_corners, vertex_edge
@@ -61,7 +61,7 @@ from cython.cimports.instrument.refine.criteria import queue_rejected_fan, stein
 from cython.cimports.instrument.refine.deletion import chew_delete
 from cython.cimports.instrument.refine.encroach import check_subsegment, enc_edge, enc_free, enc_push, in_lens, may_split, queue_side
 from cython.cimports.instrument.refine.ghosts import insertion_records, note_born, rejected_bounds, rejected_fan_records, requeued, revive_ghosts
-from cython.cimports.instrument.refine.inplace import split_in_place, splits_cleanly
+from cython.cimports.instrument.refine.inplace import split_in_place
 from cython.cimports.instrument.refine.order import TRIANGLE
 from cython.cimports.instrument.refine.queues import ghost_room, ghost_slot, ghosts_made, queue_clear, queue_compact, queue_pop, queue_push, queue_used
 from cython.cimports.instrument.refine.state import T_CIRCUMCENTER, T_OFFCENTER, T_REJECTED, T_SEGMENT, Refiner, step_begins, step_undone, trace_full, trace_row

@@ -38,7 +38,8 @@ import numpy as np
 
 import cython
 from cython.cimports.instrument.core.insert import (
-    flip, flip_in_place, lawson, lawson_in_place, should_flip, split_edge, split_edge_in_place, split_triangle, star_edges,
+    flip, flip_in_place, lawson, lawson_in_place, should_flip, split_edge, split_edge_in_place, split_triangle, splits_cleanly,
+    star_edges,
 )
 from cython.cimports.instrument.core.locate import LOC_INSIDE, LOC_ON_EDGE, LOC_ON_VERTEX, walk
 from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, Index, Mesh, lnext, lprev, next_hull_edge, set_parent, spare_triangles
@@ -827,33 +828,6 @@ def _scouted_fits(
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
-def _splits_cleanly(m: Mesh, c: Index, px: cython.double, py: cython.double) -> cython.bint:
-    """Would splitting edge ``c`` (``r -> l``, apex ``b``; beyond it apex
-    ``x``) at the point ``p`` leave four counter-clockwise triangles ``(p,
-    l, b)``, ``(b, r, p)``, ``(p, x, l)``, ``(r, x, p)``?  Whether ``p`` is
-    on ``c``'s line does not matter (a rounded crossing point seldom is):
-    only that it lies inside the quadrilateral the two triangles make, as
-    seen from its corners."""
-    xy = m.xy
-    r: Index = m.corner[lnext(c)]
-    l: Index = m.corner[lprev(c)]
-    b: Index = m.corner[c]
-    m.work[C_ORIENT] += 2
-    if not (orient2d(px, py, xy[l, 0], xy[l, 1], xy[b, 0], xy[b, 1]) > 0.0
-            and orient2d(xy[b, 0], xy[b, 1], xy[r, 0], xy[r, 1], px, py) > 0.0):
-        return False
-    tw: Index = m.twin[c]
-    if tw == NO_EDGE:
-        return True
-    x: Index = m.corner[tw]
-    m.work[C_ORIENT] += 2
-    return (orient2d(px, py, xy[x, 0], xy[x, 1], xy[l, 0], xy[l, 1]) > 0.0
-            and orient2d(xy[r, 0], xy[r, 1], xy[x, 0], xy[x, 1], px, py) > 0.0)
-
-
-@cython.cfunc
-@cython.nogil
-@cython.exceptval(check=False)
 def _place_crossing(m: Mesh, segs: Subsegments, r: Index, nv: Index, px: cython.double, py: cython.double,
                     right: Index, left: Index, t: cython.double) -> cython.void:
     """Make vertex ``nv`` at (px, py), the crossing at parameter ``t`` of
@@ -970,7 +944,7 @@ def _split_at_crossing(
         return b, True, False
     status: cython.int
     e: Index
-    if _splits_cleanly(m, c, px, py):
+    if splits_cleanly(m, c, px, py):
         half0: Index = new_record(segs, segs.marker[r], segs.source[r], segs.ends[r, 0], segs.ends[r, 1])
         if half0 < 0:
             return -1, False, False
