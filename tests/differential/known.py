@@ -114,19 +114,6 @@ def _no_segments(case: Case) -> bool:
 
 DEFECTS += [
     Defect(
-        "needle-split-at-vertex",
-        "a point set lying within an ulp of a line along an axis (4 points, x from 0 to 2.2e-16, y to 0.92) "
-        "under q0: a free vertex 5.5e-38 beside the hull subsegment (0, 0) (3e-198, 0.92) lies within half an "
-        "ulp of the largest coordinate of it, so refine/splits.py's _on_subsegment takes it as on the "
-        "subsegment and splits there, where Triangle splits at the midpoint; ours ends with 20,253 vertices "
-        "against Triangle's 10,166 (bound 10,921; regressions/needle-split-at-vertex-size.json). Without that "
-        "slack ours makes Triangle's 10,166, but a vertex 4.9e-11 beside a hull edge at y = 1e180 "
-        "(tests/engine/test_mixed_scale_refinement.py) then ends in a PrecisionError; the rule that tells the "
-        "two apart (where a split point can be placed and refined from) is not found yet",
-        lambda c, f, n: (f.kind == "size" and _no_segments(c) and not read_switches(c.switches).p
-                         and _axis_span(c) < 1e-30),
-    ),
-    Defect(
         "denormal-walk-timeout",
         "14 random points among which some have coordinates 2^-1022, 2^-149 and 2^-126 beside ones near 1, "
         "under q10 (tests/differential/open/denormal-walk-timeout.json, kept out of the suite: it runs to the "

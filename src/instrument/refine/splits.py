@@ -128,8 +128,10 @@ def _on_segment_points(
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
-def _on_subsegment(m: Mesh, a: Index, b: Index, c: Index) -> cython.bint:
-    """Does vertex ``c`` lie on the segment ``a b`` up to rounding, between its ends?"""
+def _on_subsegment(m: Mesh, a: Index, b: Index, c: Index, loose: cython.bint) -> cython.bint:
+    """Does vertex ``c`` lie on the segment ``a b`` up to rounding, between
+    its ends?  ``loose``: a free vertex within half an ulp of the largest
+    coordinate counts as on it too (see below for when)."""
     # squares overflow beyond 2^511 (every vertex lay on every subsegment)
     # and vanish below 2^-537: out of range, the test runs on the points
     # scaled by a power of two (exact upward; downward only bits below
@@ -145,19 +147,23 @@ def _on_subsegment(m: Mesh, a: Index, b: Index, c: Index) -> cython.bint:
     by: cython.double = m.xy[b, 1] * f
     cx: cython.double = m.xy[c, 0] * f
     cy: cython.double = m.xy[c, 1] * f
-    if not _on_segment_points(ax, ay, bx, by, cx, cy, HALF_ULP):
-        return False
     # Half an ulp of the largest coordinate is far more than rounding on the
-    # other axis at mixed scales: beside a segment x = 2.2e-278 running up to
-    # y = 5.6e25 it is 6e9 in x, and every vertex of the domain's side x = 0
-    # lay "on" the segment; the splits at them bent it onto that side and
-    # the strip between the two was lost from the mesh.  A vertex on another
-    # segment must not be joined to this one by less than rounding on each
-    # axis; a free vertex may (a vertex 4.9e-11 beside a hull edge at
-    # y = 1e180, where the next double along the edge is 1e164 away).
-    e0: Index = vertex_edge(m, c)
-    if e0 < 0 or edge_around(m, e0, -1) < 0:
-        return True
+    # other axis at mixed scales.  Beside a segment x = 2.2e-278 running up
+    # to y = 5.6e25 it is 6e9 in x: every vertex of the domain's side x = 0
+    # lay "on" the segment, the splits at them bent it onto that side and
+    # the strip between the two was lost.  Beside a hull edge from (0, 0) to
+    # (3e-198, 0.92) it took a free vertex 5.5e-38 away as on it, and the
+    # splits there made twice Triangle's mesh, which splits at the midpoint.
+    # So the slack serves only a free vertex (none on another segment), and
+    # the caller asks for it only where the vertex must join the subsegment:
+    # under an angle bound (no triangle between the two can be good: a vertex
+    # 4.9e-11 beside a hull edge at y = 1e180, where the next double along the
+    # edge is 1e164 away, left needles whose off-centers rounded onto their
+    # own edges), or once the subsegment is too short for a split point.
+    if loose:
+        e0: Index = vertex_edge(m, c)
+        if e0 < 0 or edge_around(m, e0, -1) < 0:
+            return _on_segment_points(ax, ay, bx, by, cx, cy, HALF_ULP)
     return _on_segment_points(ax, ay, bx, by, cx, cy, 0.0)
 
 
@@ -451,10 +457,6 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
     if mult != 0.0 and den != 0.0 and mult == mult and big <= 2.0**480 and big >= 2.0**-480:
         px += mult * ey
         py += mult * -ex
-    if (px == m.xy[o, 0] and py == m.xy[o, 1]) or (px == m.xy[d, 0] and py == m.xy[d, 1]):
-        r.error_org = o
-        r.error_dest = d
-        return PRECISION
     # A vertex can lie on the subsegment within rounding, not exactly (a split
     # point an earlier run wrote out, read back as an input vertex): it is
     # then the apex on its side (any other triangle there would contain it).
@@ -464,15 +466,25 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
     # (Triangle crashes).  Split at that vertex instead.
     # (Where the apex cannot take the split, the split point is placed as
     # usual: the rim check below keeps the fan from folding.)
+    # Under an angle bound, or where the subsegment is too short for a split
+    # point (it rounds onto an end), a free apex within half an ulp of it
+    # takes the split too (_on_subsegment); failing that, a split point on
+    # an end runs out of precision.
     status: cython.int
-    if _on_subsegment(m, o, d, m.corner[e]):
+    cornered: cython.bint = (px == m.xy[o, 0] and py == m.xy[o, 1]) or (px == m.xy[d, 0] and py == m.xy[d, 1])
+    loose: cython.bint = cornered or r.cfg.angle_test
+    if _on_subsegment(m, o, d, m.corner[e], loose):
         status = _split_at_apex(r, m, segs, e, e, triangles)
         if status != FAILED:
             return status
-    if tw != NO_EDGE and _on_subsegment(m, o, d, m.corner[tw]):
+    if tw != NO_EDGE and _on_subsegment(m, o, d, m.corner[tw], loose):
         status = _split_at_apex(r, m, segs, e, tw, triangles)
         if status != FAILED:
             return status
+    if cornered:
+        r.error_org = o
+        r.error_dest = d
+        return PRECISION
     # The cavity takes both sides of e, as a point on it would, unless the
     # point was rounded off the line and outside the far side's circle: then
     # that side stays, and e with it, no longer a subsegment (_bent_away).
