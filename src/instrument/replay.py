@@ -144,7 +144,6 @@ def replay(
     *,
     then: str | None = "triangle",
     steiner: str = "offcenter",
-    seed: int = 0,
     stop_after: int | None = None,
 ):
     """Split Δ_0, Δ_1, ... of I(n) in Theorem 3's order, then finish with ``then``.

@@ -171,11 +171,7 @@ def list_edges(m: Mesh, constrained: cython.bint, out: cython.longlong[::1]) -> 
 def edge_ends(m: Mesh, edges: cython.longlong[::1], out: cython.int[:, ::1]) -> cython.void:
     """``out[i]`` = (origin, destination) of edge ``edges[i]``."""
     e: Index
-    t: Index
-    k: Index
     for i in range(edges.shape[0]):
         e = edges[i]
-        t = e // 3
-        k = e - 3 * t
-        out[i, 0] = m.corner[3 * t + (k + 1) % 3]
-        out[i, 1] = m.corner[3 * t + (k + 2) % 3]
+        out[i, 0] = m.corner[lnext(e)]
+        out[i, 1] = m.corner[lprev(e)]
