@@ -31,8 +31,6 @@ from cython.cimports.instrument.core.mesh import (
     Mesh,
     bond,
     kill_triangle,
-    lnext,
-    lprev,
     new_triangle,
     set_parent,
     spare_triangles,
@@ -97,6 +95,7 @@ def collect_cavity(r: Refiner, m: Mesh, px: cython.double, py: cython.double, t0
     a: Index
     b: Index
     c: Index
+    flag: cython.schar
     outside: cython.bint
     passed: cython.double = -1.0
     while i < n:
@@ -111,10 +110,11 @@ def collect_cavity(r: Refiner, m: Mesh, px: cython.double, py: cython.double, t0
             tw = m.twin[e]
             outside = tw == NO_EDGE or m.seg[e] != NO_SEG
             if not outside:
-                u = tw // 3
-                if m.tflag[u] == 1:
+                u = cython.cast(cython.size_t, tw) // 3  # (tw >= 0: the unsigned division is shorter)
+                flag = m.tflag[u]
+                if flag == 1:
                     continue
-                if m.tflag[u] == 0:
+                if flag == 0:
                     a, b, c = m.corner[3 * u], m.corner[3 * u + 1], m.corner[3 * u + 2]
                     m.work[C_INCIRCLE] += 1
                     if incircle(m.xy[a, 0], m.xy[a, 1], m.xy[b, 0], m.xy[b, 1], m.xy[c, 0], m.xy[c, 1], px, py) > 0.0:
@@ -130,8 +130,8 @@ def collect_cavity(r: Refiner, m: Mesh, px: cython.double, py: cython.double, t0
                     r.cav[tested] = u
                 outside = True
             r.bnd[nb, 0] = tw
-            r.bnd[nb, 1] = m.corner[lnext(e)]
-            r.bnd[nb, 2] = m.corner[lprev(e)]
+            r.bnd[nb, 1] = m.corner[e + 1 if k < 2 else e - 2]  # org: lnext(e), known from k
+            r.bnd[nb, 2] = m.corner[e + 2 if k == 0 else e - 1]  # dest: lprev(e)
             r.bnd[nb, 3] = m.seg[e]
             r.bnd[nb, 4] = e
             if inherits:
