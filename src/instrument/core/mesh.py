@@ -102,19 +102,32 @@ class Mesh:
         cap = max(n, int(vertices if vertices is not None else n), 1)
         slots = max(int(triangles), 4)
         self.xy = _widened(xy, cap, 0.0)
-        self.vmark = np.zeros(cap, dtype=np.int32)
-        self.vtri = filled(cap if constraints else 0, -1, np.int64)
-        self.vtype = np.zeros(cap, dtype=np.int8)
         self.parent = filled((cap if parents else 0, PARENT_COLUMNS), -1.0)
-        self.vslot = filled(cap if constraints else 0, -1, np.int64)
-        self.corner = filled(3 * slots, GHOST, np.int32)
-        self.twin = filled(3 * slots, NO_EDGE, np.int32)
-        self.seg = filled(3 * slots if constraints else 0, NO_SEG, np.int32)
-        self.stamp = np.zeros(slots, dtype=np.int32)
-        self.free = np.zeros(slots, dtype=np.int32)
-        self.area_bound = filled(slots if area_bounds else 0, -1.0)
-        self.attribute = np.zeros(slots if attributes else 0)
-        self.tflag = np.zeros(slots, dtype=np.int8)
+        # The 1-D tables come from one block per type and starting value,
+        # each table a slice of its block: a small run's mesh made fourteen
+        # arrays and took each as a typed memoryview, which cost more than
+        # the copying (slicing a typed memoryview costs next to nothing).
+        # The blocks of zeros stay lazily mapped, as the tables were.
+        # Growth replaces every table by an array of its own (grow_*).
+        links: cython.int[::1] = filled((9 if constraints else 6) * slots, -1, np.int32)
+        self.corner = links[0 : 3 * slots]
+        self.twin = links[3 * slots : 6 * slots]
+        self.seg = links[6 * slots : links.shape[0]]
+        counts: cython.int[::1] = np.zeros(cap + 2 * slots, dtype=np.int32)
+        self.vmark = counts[0:cap]
+        self.stamp = counts[cap : cap + slots]
+        self.free = counts[cap + slots : cap + 2 * slots]
+        hints: cython.longlong[::1] = filled(2 * cap if constraints else 0, -1, np.int64)
+        self.vtri = hints[0 : hints.shape[0] // 2]
+        self.vslot = hints[hints.shape[0] // 2 : hints.shape[0]]
+        flags: cython.schar[::1] = np.zeros(cap + slots, dtype=np.int8)
+        self.vtype = flags[0:cap]
+        self.tflag = flags[cap : cap + slots]
+        bounds = slots if area_bounds else 0
+        reals: cython.double[::1] = filled(bounds + (slots if attributes else 0), -1.0)
+        reals[bounds : reals.shape[0]] = 0.0
+        self.area_bound = reals[0:bounds]
+        self.attribute = reals[bounds : reals.shape[0]]
         self.nvert = n
         self.nslot = 0
         self.nfree = 0
