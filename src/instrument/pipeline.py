@@ -199,9 +199,12 @@ def mesh_input(inp: dict, o: Options, work: np.ndarray, threads: int = 1, room: 
     nseg = len(inp.get("segments", ()))
     spare = room
     method = "incremental" if o.i else "vertical" if o.l else "divconq"  # -F: no sweepline; divide and conquer
+    # the constraint tables (Mesh.add_constraint_tables) from the start when
+    # a later stage needs them: made with the others, they cost no arrays of
+    # their own; a plain triangulation does without
     m, dup = delaunay(
         xy, work, method=method, extra_vertices=spare, extra_triangles=2 * spare,
-        parents="vertex_attributes" in inp, constraints=False, threads=threads,
+        parents="vertex_attributes" in inp, constraints=o.p or o.c or o.quality, threads=threads,
     )
     np.asarray(m.vmark)[: xy.shape[0]] = inp["vertex_markers"]
     ms = MeshState(mesh=m, segs=Subsegments(nseg + room), n_input=xy.shape[0], dup=dup, n_triangles_initial=m.nlive)

@@ -59,9 +59,13 @@ if not cython.compiled:  # compiled, these are mesh.pxd's
     V_FREE = 2  # made by splitting a triangle
     V_DEAD = 3  # a free vertex deleted again (left out of the output)
 
+#: The tables a mesh has no rows of (see Mesh.__init__): one empty array per type.
+_NO_ROWS = {dtype: np.empty(0, dtype=dtype) for dtype in (np.int32, np.int64, np.float64)}
+
 #: Columns of Mesh.parent: a new vertex's attributes are
 #: a0 + s (a1 - a0) + t (a2 - a0) of vertices p0, p1, p2 (p0 < 0: zeros).
 PARENT_COLUMNS = 5
+_NO_PARENTS = np.empty((0, PARENT_COLUMNS))  # a mesh without attribute records (see _NO_ROWS)
 
 
 def _widened(a, rows: int, fill):
@@ -102,19 +106,36 @@ class Mesh:
         cap = max(n, int(vertices if vertices is not None else n), 1)
         slots = max(int(triangles), 4)
         self.xy = _widened(xy, cap, 0.0)
-        self.vmark = np.zeros(cap, dtype=np.int32)
-        self.vtri = filled(cap if constraints else 0, -1, np.int64)
-        self.vtype = np.zeros(cap, dtype=np.int8)
-        self.parent = filled((cap if parents else 0, PARENT_COLUMNS), -1.0)
-        self.vslot = filled(cap if constraints else 0, -1, np.int64)
-        self.corner = filled(3 * slots, GHOST, np.int32)
-        self.twin = filled(3 * slots, NO_EDGE, np.int32)
-        self.seg = filled(3 * slots if constraints else 0, NO_SEG, np.int32)
-        self.stamp = np.zeros(slots, dtype=np.int32)
-        self.free = np.zeros(slots, dtype=np.int32)
-        self.area_bound = filled(slots if area_bounds else 0, -1.0)
-        self.attribute = np.zeros(slots if attributes else 0)
+        self.parent = filled((cap, PARENT_COLUMNS), -1.0) if parents else _NO_PARENTS
+        # The 1-D tables of one kind (per vertex or per triangle) that always
+        # grow together come from one block per type and starting value, each
+        # table a slice of its block: a small run's mesh made fifteen arrays
+        # and took each as a typed memoryview, which cost more than the
+        # copying (slicing a typed memoryview costs next to nothing).  Growth
+        # replaces every table of a block at once (grow_*), so no old block
+        # outlives it; tables without rows share one empty array per type
+        # (a slice of no rows would keep its block alive).  The blocks of
+        # zeros stay lazily mapped, as the tables were.
+        links: cython.int[::1] = filled((9 if constraints else 6) * slots, -1, np.int32)
+        self.corner = links[0 : 3 * slots]
+        self.twin = links[3 * slots : 6 * slots]
+        self.seg = links[6 * slots : 9 * slots] if constraints else _NO_ROWS[np.int32]
+        counts: cython.int[::1] = np.zeros(2 * slots, dtype=np.int32)
+        self.stamp = counts[0:slots]
+        self.free = counts[slots : 2 * slots]
         self.tflag = np.zeros(slots, dtype=np.int8)
+        self.vmark = np.zeros(cap, dtype=np.int32)
+        self.vtype = np.zeros(cap, dtype=np.int8)
+        hints: cython.longlong[::1]
+        if constraints:
+            hints = filled(2 * cap, -1, np.int64)
+            self.vtri = hints[0:cap]
+            self.vslot = hints[cap : 2 * cap]
+        else:
+            self.vtri = _NO_ROWS[np.int64]
+            self.vslot = _NO_ROWS[np.int64]
+        self.area_bound = filled(slots, -1.0) if area_bounds else _NO_ROWS[np.float64]
+        self.attribute = np.zeros(slots) if attributes else _NO_ROWS[np.float64]
         self.nvert = n
         self.nslot = 0
         self.nfree = 0

@@ -31,8 +31,6 @@ from cython.cimports.instrument.core.mesh import (
     Mesh,
     bond,
     kill_triangle,
-    lnext,
-    lprev,
     new_triangle,
     set_parent,
     spare_triangles,
@@ -97,6 +95,7 @@ def collect_cavity(r: Refiner, m: Mesh, px: cython.double, py: cython.double, t0
     a: Index
     b: Index
     c: Index
+    flag: cython.schar
     outside: cython.bint
     passed: cython.double = -1.0
     while i < n:
@@ -111,10 +110,11 @@ def collect_cavity(r: Refiner, m: Mesh, px: cython.double, py: cython.double, t0
             tw = m.twin[e]
             outside = tw == NO_EDGE or m.seg[e] != NO_SEG
             if not outside:
-                u = tw // 3
-                if m.tflag[u] == 1:
+                u = cython.cast(cython.size_t, tw) // 3  # (tw >= 0: the unsigned division is shorter)
+                flag = m.tflag[u]
+                if flag == 1:
                     continue
-                if m.tflag[u] == 0:
+                if flag == 0:
                     a, b, c = m.corner[3 * u], m.corner[3 * u + 1], m.corner[3 * u + 2]
                     m.work[C_INCIRCLE] += 1
                     if incircle(m.xy[a, 0], m.xy[a, 1], m.xy[b, 0], m.xy[b, 1], m.xy[c, 0], m.xy[c, 1], px, py) > 0.0:
@@ -130,8 +130,8 @@ def collect_cavity(r: Refiner, m: Mesh, px: cython.double, py: cython.double, t0
                     r.cav[tested] = u
                 outside = True
             r.bnd[nb, 0] = tw
-            r.bnd[nb, 1] = m.corner[lnext(e)]
-            r.bnd[nb, 2] = m.corner[lprev(e)]
+            r.bnd[nb, 1] = m.corner[e + 1 if k < 2 else e - 2]  # org: lnext(e), known from k
+            r.bnd[nb, 2] = m.corner[e + 2 if k == 0 else e - 1]  # dest: lprev(e)
             r.bnd[nb, 3] = m.seg[e]
             r.bnd[nb, 4] = e
             if inherits:
@@ -208,19 +208,23 @@ def order_rim(r: Refiner, m: Mesh, nb: Index, first: Index) -> cython.void:
 @cython.inline
 @cython.nogil
 @cython.exceptval(check=False)
-def _remake(m: Mesh, t: Index, a: Index, b: Index, c: Index) -> Index:
+def _remake(m: Mesh, t: Index, a: Index, b: Index, c: Index, outer: Index, rec: Index) -> Index:
     """Live slot ``t`` as ``kill_triangle`` then ``new_triangle(m, a, b, c)``
-    would leave it when the kill's slot is the one taken: its stamp one
-    higher, corners ``a b c``, no neighbours, no subsegments."""
+    would leave it when the kill's slot is the one taken (its stamp one
+    higher, corners ``a b c``, edges 1 and 2 unlinked and no subsegments),
+    with its edge 0 (``b -> c``) bonded to ``outer`` and part of record
+    ``rec``, as the fan's rim edge: each table entry written once."""
     e: Index = 3 * t
     m.stamp[t] += 1
     m.corner[e] = cython.cast(cython.int, a)
     m.corner[e + 1] = cython.cast(cython.int, b)
     m.corner[e + 2] = cython.cast(cython.int, c)
-    m.twin[e] = NO_EDGE
+    m.twin[e] = cython.cast(cython.int, outer)
+    if outer >= 0:
+        m.twin[outer] = cython.cast(cython.int, e)
     m.twin[e + 1] = NO_EDGE
     m.twin[e + 2] = NO_EDGE
-    m.seg[e] = NO_SEG
+    m.seg[e] = cython.cast(cython.int, rec)
     m.seg[e + 1] = NO_SEG
     m.seg[e + 2] = NO_SEG
     return t
@@ -257,9 +261,12 @@ def fill_cavity(r: Refiner, m: Mesh, p: Index, n: Index, nb: Index) -> cython.vo
         k = r.fan[j]
         u = r.bnd[k, 1]
         v = r.bnd[k, 2]
-        t = _remake(m, r.cav[n - 1 - j], p, u, v) if j < n else new_triangle(m, p, u, v)
-        bond(m, 3 * t, r.bnd[k, 0])  # (the other edges are left unlinked)
-        m.seg[3 * t] = cython.cast(cython.int, r.bnd[k, 3])
+        if j < n:
+            t = _remake(m, r.cav[n - 1 - j], p, u, v, r.bnd[k, 0], r.bnd[k, 3])
+        else:
+            t = new_triangle(m, p, u, v)
+            bond(m, 3 * t, r.bnd[k, 0])  # (the other edges are left unlinked)
+            m.seg[3 * t] = cython.cast(cython.int, r.bnd[k, 3])
         if inherits:
             inherit(m, t, r.bval[k, 0], r.bval[k, 1])
         r.fan[j] = t

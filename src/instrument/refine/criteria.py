@@ -390,14 +390,14 @@ def _triangle_key(r: Refiner, m: Mesh, mn: cython.double, u: Index, v: Index) ->
 
 
 @cython.cfunc
-@cython.inline
 @cython.nogil
 @cython.exceptval(check=False)
 def _queue(
     r: Refiner, m: Mesh, t: Index, mn: cython.double, cos2: cython.double, circ2: cython.double, u: Index, v: Index,
 ) -> cython.void:
     """Put bad triangle ``t`` (shortest edge ``u v``, squared ``mn``) on the
-    queue under the strategy's priority."""
+    queue under the strategy's priority.  (Not inline: kept out of ``_test``,
+    which is then small enough for the compiler to inline into ``test_fan``.)"""
     strategy: cython.int = r.cfg.strategy
     if strategy == TRIANGLE:
         queue_push(r, _triangle_key(r, m, mn, u, v), t, m.stamp[t])
