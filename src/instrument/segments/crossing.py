@@ -160,8 +160,11 @@ def scouted_crossing(
     (``r`` right of e1 -> e2), computed in doubles as Triangle does:
     ``t = (ey wx - ex wy) / (ty ex - tx ey)`` with ``e = e2 - e1``,
     ``T = l - r``, ``w = r - e2``, and the point ``r + t T``.  ``t`` is -1
-    where the lines are parallel or t is not strictly inside (0, 1) (the
-    caller rounds the exact crossing then).
+    where the lines are parallel or t is outside [0, 1] (the caller rounds
+    the exact crossing then).  t can round to exactly 0 or 1 where the
+    segments cross within rounding of an end of ``r l``: Triangle then
+    inserts a vertex at (or an ulp beside) that end, which the caller
+    decides about.
 
     The differences are scaled by a power of two where they leave
     [2^-240, 2^240], so that the products of two neither overflow nor
@@ -174,6 +177,6 @@ def scouted_crossing(
     if not (den != 0.0):
         return -1.0, 0.0, 0.0
     t: cython.double = num / den
-    if not (t > 0.0 and t < 1.0):
+    if not (t >= 0.0 and t <= 1.0):
         return -1.0, 0.0, 0.0
     return t, rx + t * (lx - rx), ry + t * (ly - ry)
