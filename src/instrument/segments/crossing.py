@@ -25,7 +25,10 @@ cross products taken against the inserted piece's far end, all in doubles.
 It depends on which end the piece is walked from (that end is e1), so two
 meshers that round the same crossing each its own way start refinement
 from points a few units in the last place apart and part.  Segment recovery
-uses it where it is well conditioned and the exact rounding elsewhere.
+uses it where it is well conditioned and the exact rounding elsewhere, and
+beside an input vertex that ends the crossed subsegment, where Triangle's
+point decides whether the crossing is a vertex of its own an ulp or two
+beside that end, or the end itself (recover.py's ``_split_at_crossing``).
 """
 
 from __future__ import annotations

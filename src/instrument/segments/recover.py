@@ -15,7 +15,10 @@ follows.
    subsegment it would cross.
 3. Crossing a subsegment: the two segments intersect.  The intersection point
    (computed along the crossed subsegment) becomes a new vertex that splits
-   it; the piece is replaced by ``a -> p`` and ``p -> b``.
+   it; the piece is replaced by ``a -> p`` and ``p -> b``.  Within rounding
+   of an end of the subsegment the point is Triangle's, beside that end, or
+   that end itself with a copy of it in the output, as Triangle outputs such
+   a point twice (``_split_at_crossing``).
 4. Otherwise flip the crossed edges away (Sloan's algorithm: flip any
    crossed edge whose quadrilateral is strictly convex, until none crosses;
    one always is), mark the segment, and restore the constrained Delaunay
