@@ -25,7 +25,7 @@ from .core.subsegments import Subsegments
 from .delaunay import delaunay
 from .errors import TriangleError
 from .output import Result, assemble
-from .segments import clean_segments, enclose_hull, recover_segments
+from .segments import clean_segments, enclose_hull, mark_copies, recover_segments
 from .state import MeshState
 from .refine.order import strategy_id
 from .switches import Options, parse
@@ -216,6 +216,7 @@ def mesh_input(inp: dict, o: Options, work: np.ndarray, threads: int = 1, room: 
         if o.c:
             enclose_hull(ms)
         carve(ms, o, inp.get("holes"), inp.get("regions"), xy)
+        mark_copies(ms)
     elif o.c or o.quality:  # refinement needs the hull as segments
         enclose_hull(ms)
     else:

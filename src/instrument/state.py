@@ -29,6 +29,9 @@ class MeshState:
     n_triangles_initial: int  # triangles the input's triangulation had (0: collinear input)
     warnings: list[str] = field(default_factory=list)
     dead: np.ndarray | None = None  # vertices refinement deleted (left out of the output)
+    # rows (copy, vertex): crossings segment recovery made as copies of an
+    # input vertex, outside the mesh (Triangle outputs such a crossing twice)
+    copies: np.ndarray | None = None
 
     @property
     def work(self) -> np.ndarray:

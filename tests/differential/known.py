@@ -127,50 +127,6 @@ DEFECTS += [
 ]
 
 
-def _passes_beside_an_end(case: Case, rel: float = 2.0**-40) -> bool:
-    """Does a segment pass within ``rel`` of its length beside an endpoint
-    of another segment, strictly between its own ends?"""
-    v = np.asarray(case.input.get("vertices", ()), dtype=float).reshape(-1, 2)
-    seg = np.asarray(case.input.get("segments", ()), dtype=np.int64).reshape(-1, 2)
-    if not v.size or not seg.size:
-        return False
-    big = float(np.abs(v).max())
-    v = v / big if big > 0.0 else v  # products neither overflow nor vanish
-    ends = np.unique(seg)
-    for a, b in seg:
-        d = v[b] - v[a]
-        length2 = float(d @ d)
-        if not length2 > 0.0:
-            continue
-        for k in ends:
-            if k == a or k == b:
-                continue
-            w = v[k] - v[a]
-            t = float(w @ d) / length2
-            off = abs(float(d[0] * w[1] - d[1] * w[0])) / length2  # distance / length
-            if 0.0 < t < 1.0 and off <= rel:
-                return True
-    return False
-
-
-DEFECTS += [
-    Defect(
-        "crossing-beside-an-end",
-        "a segment that passes within rounding of another segment's endpoint, as crossing-segments draws them: "
-        "ours and Triangle disagree on whether the crossing is that endpoint or a vertex of its own beside it, "
-        "either way (7 points, 3 segments under pQ and pcQ: ours 9 vertices, Triangle 8). segments/crossing.py "
-        "takes the endpoint where Triangle places its own crossing vertex one ulp beside it (the crossing of (0.0109, 4.8e-288) (3.4332275390625e-05, 0.77990420891580"
-        "24) with a segment through it: Triangle's vertex (3.433227539062652e-05, 0.7799042089158023)). Then "
-        "the segments' pieces differ and carving keeps a triangle of area 2.4e-4 outside the domain under pQ "
-        "(regressions/crossing-beside-an-end-area.json), or, where the crossing rounds onto the endpoint "
-        "exactly (Triangle outputs that point twice), recovery folds the mesh and ours raises TriangleError "
-        "(regressions/crossing-beside-an-end-error.json). Both found by campaign seed 2902; both at a92a065 too",
-        lambda c, f, n: (c.family == "crossing-segments" and read_switches(c.switches).p
-                         and f.kind in ("area-total", "count", "markers", "ours-error-where-triangle-meshes")
-                         and _passes_beside_an_end(c)),
-    ),
-]
-
 BY_ID = {d.id: d for d in DEFECTS}
 
 

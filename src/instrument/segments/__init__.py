@@ -65,6 +65,8 @@ def recover_segments(ms: MeshState, rows: np.ndarray, seg_markers: np.ndarray) -
     while True:
         status = insert_segments(m, ms.segs, work)
         if status == DONE:
+            if work.ncopies:
+                ms.copies = work.copied if ms.copies is None else np.vstack([ms.copies, work.copied])
             if ms.work[C_STEINER]:
                 if count_inverted(m):
                     # rounded intersection points of nearly concurrent segments
@@ -97,6 +99,18 @@ def recover_segments(ms: MeshState, rows: np.ndarray, seg_markers: np.ndarray) -
         if m.nvert >= m.vertex_capacity or m.spare() < 8 or ms.segs.count + 2 > ms.segs.capacity:
             ms.grow(vertices=m.nvert // 2 + 16, triangles=m.triangle_capacity // 2 + 64, records=ms.segs.capacity)
         work.grow_pieces()
+
+
+def mark_copies(ms: MeshState) -> None:
+    """Give each crossing copy (``MeshState.copies``) the marker of the
+    vertex it copies, once carving has set the markers: Triangle's copy
+    is in its mesh, an end of the same subsegments as the vertex, so the
+    boundary marks that vertex (regressions/crossing-beside-an-end-error.json:
+    both 1 after the hull is eaten)."""
+    if ms.copies is None or not len(ms.copies):
+        return
+    vmark = np.asarray(ms.mesh.vmark)
+    vmark[ms.copies[:, 0]] = vmark[ms.copies[:, 1]]
 
 
 def merge_duplicates(rows: np.ndarray, markers: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

@@ -25,7 +25,10 @@ cross products taken against the inserted piece's far end, all in doubles.
 It depends on which end the piece is walked from (that end is e1), so two
 meshers that round the same crossing each its own way start refinement
 from points a few units in the last place apart and part.  Segment recovery
-uses it where it is well conditioned and the exact rounding elsewhere.
+uses it where it is well conditioned and the exact rounding elsewhere, and
+beside an input vertex that ends the crossed subsegment, where Triangle's
+point decides whether the crossing is a vertex of its own an ulp or two
+beside that end, or the end itself (recover.py's ``_split_at_crossing``).
 """
 
 from __future__ import annotations
@@ -160,8 +163,11 @@ def scouted_crossing(
     (``r`` right of e1 -> e2), computed in doubles as Triangle does:
     ``t = (ey wx - ex wy) / (ty ex - tx ey)`` with ``e = e2 - e1``,
     ``T = l - r``, ``w = r - e2``, and the point ``r + t T``.  ``t`` is -1
-    where the lines are parallel or t is not strictly inside (0, 1) (the
-    caller rounds the exact crossing then).
+    where the lines are parallel or t is outside [0, 1] (the caller rounds
+    the exact crossing then).  t can round to exactly 0 or 1 where the
+    segments cross within rounding of an end of ``r l``: Triangle then
+    inserts a vertex at (or an ulp beside) that end, which the caller
+    decides about.
 
     The differences are scaled by a power of two where they leave
     [2^-240, 2^240], so that the products of two neither overflow nor
@@ -174,6 +180,6 @@ def scouted_crossing(
     if not (den != 0.0):
         return -1.0, 0.0, 0.0
     t: cython.double = num / den
-    if not (t > 0.0 and t < 1.0):
+    if not (t >= 0.0 and t <= 1.0):
         return -1.0, 0.0, 0.0
     return t, rx + t * (lx - rx), ry + t * (ly - ry)

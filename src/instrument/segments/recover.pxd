@@ -13,6 +13,8 @@ cdef class Recovery:
     cdef public Index inputs               # input segments
     cdef public Index plain                # vertices below it are input vertices (exact)
     cdef public long long[:, ::1] ends     # each input segment's endpoints (-1: none)
+    cdef public long long[:, ::1] copies   # (copy, vertex): crossings made as copies of an input vertex
+    cdef public Index ncopies              # rows of copies in use
 
 cpdef (Index, int) turn_to(Mesh m, Index a, Index b, Index e0, Index plain, Index sa, Index sb) noexcept nogil
 cpdef double crossing_parameter(double ax, double ay, double bx, double by,

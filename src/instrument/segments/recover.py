@@ -15,7 +15,10 @@ follows.
    subsegment it would cross.
 3. Crossing a subsegment: the two segments intersect.  The intersection point
    (computed along the crossed subsegment) becomes a new vertex that splits
-   it; the piece is replaced by ``a -> p`` and ``p -> b``.
+   it; the piece is replaced by ``a -> p`` and ``p -> b``.  Within rounding
+   of an end of the subsegment the point is Triangle's, beside that end, or
+   that end itself with a copy of it in the output, as Triangle outputs such
+   a point twice (``_split_at_crossing``).
 4. Otherwise flip the crossed edges away (Sloan's algorithm: flip any
    crossed edge whose quadrilateral is strictly convex, until none crosses;
    one always is), mark the segment, and restore the constrained Delaunay
@@ -50,7 +53,7 @@ from cython.cimports.instrument.core.status import DONE, FAILED, NEED_BUFFER, NE
 from cython.cimports.instrument.core.subsegments import Subsegments, new_record
 from cython.cimports.instrument.segments.crossing import crossing_point, scouted_crossing
 from cython.cimports.instrument.counters import C_INCIRCLE, C_ORIENT, C_STEINER
-from cython.cimports.libc.math import fabs, sqrt
+from cython.cimports.libc.math import fabs, nextafter, sqrt
 
 # what recovering one piece found (_recover)
 _PIECE_DONE = cython.declare(cython.int, 0)  # the piece is a subsegment now
@@ -59,6 +62,7 @@ _PIECE_CROSSES = cython.declare(cython.int, 2)  # it crosses a subsegment (the c
 _PIECE_FAILED = cython.declare(cython.int, 3)
 _PIECE_BUFFER = cython.declare(cython.int, 4)  # the scratch buffer is too small (nothing changed)
 _PIECE_SHORTENED = cython.declare(cython.int, 5)  # b's end of it is a subsegment now: go on towards the vertex
+_PIECE_COPIED = cython.declare(cython.int, 6)  # as CONTINUES, the vertex copied at the crossing of a subsegment
 
 
 @cython.cclass
@@ -71,7 +75,10 @@ class Recovery:
     segments' markers, a scratch buffer, and a count of pieces handled
     against a bound (rounded crossing points that re-route each other must
     not loop for ever).  Vertices from ``plain`` on are crossing vertices
-    (rounded); ``ends`` holds each input segment's two endpoints."""
+    (rounded); ``ends`` holds each input segment's two endpoints;
+    ``copies`` the first ``ncopies`` rows (copy, vertex) of the crossing
+    vertices made as copies of an input vertex, outside the mesh (where
+    Triangle outputs a crossing twice: ``_split_at_crossing``)."""
 
     def __init__(self, rows, markers, buffer: int, plain: int = 0):
         rows = np.asarray(rows, dtype=np.int64).reshape(-1, 3)
@@ -90,12 +97,24 @@ class Recovery:
         self.buf = np.zeros(buffer, dtype=np.int64)
         self.handled = 0
         self.inputs = rows.shape[0]
+        self.copies = np.zeros((4, 2), dtype=np.int64)
+        self.ncopies = 0
 
     def grow_pieces(self) -> None:
+        """Room for the next pieces and the next copy, where they are short of it."""
         if self.top + 4 > self.pieces.shape[0]:
             grown = np.zeros((2 * self.pieces.shape[0], 3), dtype=np.int64)
             grown[: self.pieces.shape[0]] = self.pieces
             self.pieces = grown
+        if self.ncopies >= self.copies.shape[0]:
+            grown = np.zeros((2 * self.copies.shape[0], 2), dtype=np.int64)
+            grown[: self.copies.shape[0]] = self.copies
+            self.copies = grown
+
+    @property
+    def copied(self) -> np.ndarray:
+        """The rows (copy, vertex) of the copies made so far."""
+        return np.array(self.copies[: self.ncopies], dtype=np.int64).reshape(-1, 2)
 
     def grow_buffer(self) -> None:
         self.buf = np.zeros(2 * self.buf.shape[0], dtype=np.int64)
@@ -184,16 +203,20 @@ def _side(m: Mesh, a: Index, b: Index, y: Index, plain: Index, sa: Index, sb: In
     place off the piece's line.
 
     Vertices below ``plain`` are the input's: their coordinates are exact,
-    so the tolerance applies only where a crossing vertex (``plain`` or
-    above, its coordinates rounded) is involved.  A rounded crossing vertex
-    starts pieces that are off their segment's line, and the input vertices
-    exactly on that segment (``sa -> sb``, when ``sa >= 0``) must still end
-    them; an input vertex merely near the line must not (it would bend the
-    segment through itself: a vertex 2^-126 of a side's length off a side
-    of a square did, under a tolerance relative to the coordinates alone).
-    A crossing vertex near the line of another segment through the same
-    point is taken to be on it, or later segments would cross again a
-    rounding error away."""
+    and an input vertex is on a piece of an input segment (``sa >= 0``)
+    only when exactly on it, as in Triangle.  A rounded crossing vertex
+    starts pieces that are off their segment's line, and an input vertex
+    exactly on that segment is then passed by, an ulp or so away, as
+    Triangle passes it by: the piece can then cross that vertex's own
+    segments beside it (``_split_at_crossing``) or miss them.  (Taking it,
+    as ours did, made other meshes than Triangle's: a segment pieced
+    through it closed a domain that Triangle leaves open, or crossed a
+    segment that Triangle's misses: regressions/crossing-beside-an-end-area.json
+    and crossing-beside-an-end-count.json.)  The tolerance applies only to
+    crossing vertices (``plain`` or above, their coordinates rounded), and
+    to the pieces of hull segments (``sa < 0``): a crossing vertex near the
+    line of another segment through the same point is taken to be on it,
+    or later segments would cross again a rounding error away."""
     xy = m.xy
     ax: cython.double = xy[a, 0]
     ay: cython.double = xy[a, 1]
@@ -210,11 +233,7 @@ def _side(m: Mesh, a: Index, b: Index, y: Index, plain: Index, sa: Index, sb: In
         return s
     if y >= plain or sa < 0:
         return 0.0
-    # an input vertex: on the piece only if exactly on its input segment
-    m.work[C_ORIENT] += 1
-    if orient2d(xy[sa, 0], xy[sa, 1], xy[sb, 0], xy[sb, 1], px, py) == 0.0:
-        return 0.0
-    return s
+    return s  # an input vertex: on the piece only when exactly on it
 
 
 @cython.cfunc
@@ -412,10 +431,24 @@ def _recover(
     s: cython.double
     fuzzy: cython.bint = False  # a vertex taken to be on the piece within rounding only
     crosses: cython.bint
+    copied: cython.bint = False  # end is Triangle's crossing with a subsegment, made a copy of end
+    ct: cython.double
+    csx: cython.double
+    csy: cython.double
     while end < 0:
         if m.seg[c] != NO_SEG:
             if nq == 0:
                 return _PIECE_CROSSES, a, c
+            # Triangle's crossing exactly at an input end of c (it outputs
+            # the point twice: _split_at_crossing): the piece goes to that
+            # end, by flips that leave no pocket waiting for a vertex on c
+            # (Triangle's flips would, and no vertex comes)
+            y, ct, csx, csy = _beside_end(m, a, b, c, plain)
+            if y >= 0 and csx == xy[y, 0] and csy == xy[y, 1]:
+                end = y
+                fuzzy = True
+                _place_crossing(m, segs, m.seg[c], m.nvert, csx, csy, m.corner[lnext(c)], m.corner[lprev(c)], ct)
+                copied = True
             break
         tw = m.twin[c]
         if tw == NO_EDGE:
@@ -448,15 +481,55 @@ def _recover(
             return _PIECE_CROSSES, a, e
         mark_subsegment(m, segs, e, marker, source, False)  # e: end -> a, as Triangle's
         return (_PIECE_DONE if end == b else _PIECE_CONTINUES), end, -1
+    if copied:  # the edges a -> b crossed that a -> end crosses too (not those at end)
+        nq = _crossing_only(m, a, end, qr, ql, nq)
     if not _flip_out(m, a, end, qr, ql, nq, n, stack):
         return _PIECE_FAILED, -1, -1
     e = find_edge(m, a, end)
-    if e < 0:
-        return _PIECE_FAILED, -1, -1
-    mark_subsegment(m, segs, e, marker, source, True)  # (Triangle would make it on end -> a)
+    if e >= 0:
+        mark_subsegment(m, segs, e, marker, source, True)  # (Triangle would make it on end -> a)
+    else:  # a hull edge with the mesh on its other side (a copy's piece can run along the hull)
+        e = find_edge(m, end, a)
+        if e < 0:
+            return _PIECE_FAILED, -1, -1
+        mark_subsegment(m, segs, e, marker, source, False)
     if not restore_delaunay(m, stack):
         return _PIECE_FAILED, -1, -1
+    if copied:
+        return _PIECE_COPIED, end, -1
     return (_PIECE_DONE if end == b else _PIECE_CONTINUES), end, -1
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _crossing_only(
+    m: Mesh, a: Index, b: Index, qr: cython.longlong[::1], ql: cython.longlong[::1], nq: Index,
+) -> Index:
+    """Keep, in order, the first ``nq`` queued edges (vertex pairs) that
+    cross the segment ``a b`` strictly (an end on each side, neither of
+    them ``a`` or ``b``); returns how many.  The walk queued the edges
+    crossed by a piece that ends beside ``b`` (its line within rounding of
+    ``b``): some end at ``b``, which Sloan's flips would turn for ever."""
+    xy = m.xy
+    k: Index = 0
+    u: Index
+    v: Index
+    su: cython.double
+    sv: cython.double
+    for i in range(nq):
+        u = qr[i]
+        v = ql[i]
+        if u == a or u == b or v == a or v == b:
+            continue
+        m.work[C_ORIENT] += 2
+        su = orient2d(xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[u, 0], xy[u, 1])
+        sv = orient2d(xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[v, 0], xy[v, 1])
+        if (su < 0.0 and sv > 0.0) or (su > 0.0 and sv < 0.0):
+            qr[k] = u
+            ql[k] = v
+            k += 1
+    return k
 
 
 @cython.cfunc
@@ -844,14 +917,92 @@ def _place_crossing(m: Mesh, segs: Subsegments, r: Index, nv: Index, px: cython.
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
+def _within_subsegment(
+    xy: cython.double[:, ::1], r: Index, l: Index, sx: cython.double, sy: cython.double,
+) -> cython.bint:
+    """Does the point s project strictly between ``r`` and ``l`` (exactly)?
+    Triangle's crossing beside an end E of ``r l`` can round past E (t
+    rounded to 1, then the coordinate an ulp beyond): the crossed segment's
+    chain would go back at s (the pairs of
+    tests/differential/test_near_end_crossings.py that cross 1e-21 from an
+    end beside a zero coordinate; Triangle's meshes fail the checker
+    there), and E is taken instead."""
+    rx: cython.double = xy[r, 0]
+    ry: cython.double = xy[r, 1]
+    lx: cython.double = xy[l, 0]
+    ly: cython.double = xy[l, 1]
+    return dot_sign(rx, ry, sx, sy, rx, ry, lx, ly) > 0 and dot_sign(sx, sy, lx, ly, rx, ry, lx, ly) > 0
+
+
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _an_ulp_off(ex: cython.double, ey: cython.double, sx: cython.double, sy: cython.double) -> cython.bint:
+    """Is s at least half an ulp of E's larger coordinate away from E (in
+    one coordinate)?  Triangle's crossing closer than that to E (E beside
+    a zero coordinate: (-0.56, 2e-124) an end, the crossing segment along
+    y = 0, Triangle's point (-0.56, 0)) is E for ours, as before:
+    refinement cannot place vertices between two so close (ours raised
+    PrecisionError under pcq; tests/differential/test_near_end_crossings.py,
+    whose pairs cross 1e-300..1e-10 from an end), and Triangle's vertex
+    there is a near-duplicate that the oracles merge."""
+    big: cython.double = max(fabs(ex), fabs(ey))
+    half: cython.double = 0.5 * (nextafter(big, 2.0e308) - big)
+    return fabs(sx - ex) >= half or fabs(sy - ey) >= half
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _beside_end(
+    m: Mesh, a: Index, b: Index, c: Index, plain: Index,
+) -> tuple[Index, cython.double, cython.double, cython.double]:
+    """``(E, t, sx, sy)``: where segment ``a b`` (walked from ``a``) crosses
+    subsegment edge ``c`` within rounding of an input vertex ``E`` ending
+    ``c``, and of no end of ``a b``, that vertex, with Triangle's crossing
+    (``scouted_crossing``: t along ``c``, the point s); ``E = -1`` elsewhere.
+    "Within rounding" is ``_split_at_crossing``'s tolerance about the exact
+    crossing rounded once."""
+    xy = m.xy
+    left: Index = m.corner[lprev(c)]
+    right: Index = m.corner[lnext(c)]
+    px: cython.double
+    py: cython.double
+    px, py = crossing_point(
+        xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[right, 0], xy[right, 1], xy[left, 0], xy[left, 1]
+    )
+    tol: cython.double = 2.0**-48 * (fabs(px) + fabs(py)) + 2.0**-1074
+    near_right: cython.bint = _near(xy, right, px, py, tol)
+    near_left: cython.bint = _near(xy, left, px, py, tol)
+    t: cython.double
+    sx: cython.double
+    sy: cython.double
+    if near_right == near_left or _near(xy, a, px, py, tol) or _near(xy, b, px, py, tol):
+        return -1, -1.0, 0.0, 0.0
+    end: Index = right if near_right else left
+    if end >= plain:
+        return -1, -1.0, 0.0, 0.0
+    t, sx, sy = scouted_crossing(
+        xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[right, 0], xy[right, 1], xy[left, 0], xy[left, 1]
+    )
+    if t < 0.0:
+        return -1, -1.0, 0.0, 0.0
+    return end, t, sx, sy
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
 def _split_at_crossing(
     m: Mesh, segs: Subsegments, a: Index, b: Index, c: Index, stack: cython.longlong[::1],
-    marker: cython.int, source: cython.int,
-) -> tuple[Index, cython.bint, cython.bint]:
+    marker: cython.int, source: cython.int, plain: Index,
+) -> tuple[Index, cython.bint, cython.bint, cython.bint]:
     """Make a vertex where segment ``a b`` crosses subsegment edge ``c``
     (right -> left of ``a -> b``), ``a`` the end the piece was walked from.
 
-    Returns ``(v, reroute, marked)``, ``v = -1`` if the tables are full.  The
+    Returns ``(v, reroute, marked, copied)``, ``v = -1`` if the tables are
+    full; ``copied``: see below (Triangle's rule beside an end).  The
     crossing point is Triangle's (``scouted_crossing``: along ``c`` from its
     right end, in doubles, against ``b``) where that lands within 2^-40 of
     the coordinates' magnitude of the exact crossing and in one of the two
@@ -890,6 +1041,25 @@ def _split_at_crossing(
     leaves a choice: if an end of ``c`` near the crossing lies behind ``a``
     along ``a -> b``, then ``a`` lies strictly inside ``c``, for segments
     that are not parallel.)
+
+    Beside an end: where the exact crossing is within that tolerance of
+    an input vertex ``E`` that ends ``c`` (and of no end of ``a b``),
+    Triangle's rule is followed, as measured from its output (a segment
+    passing 0, 1, 2 ulps beside another's end, either side, at scales
+    2^-1000..2^1000: scripts/crossing_beside_an_end.py).  Triangle knows
+    no tolerance: a vertex is on a segment only when exactly on it, and
+    a segment that crosses ``c`` at all, however near ``E``, makes a
+    crossing vertex at Triangle's doubles point (``scouted_crossing``),
+    which splits ``c``.  That point, one or two ulps beside ``E``, is
+    used where it splits ``c`` cleanly (Triangle's vertex and pieces);
+    where t rounds so that it lands on ``E`` exactly, Triangle inserts a
+    second vertex at ``E``'s coordinates and outputs the point twice:
+    here the segment goes through ``E`` and the copy is made as a vertex
+    outside the mesh (``copied``; the caller records it, and it takes
+    ``E``'s marker at the end, as Triangle's copy shares ``E``'s
+    subsegments), so the output has Triangle's vertices while the mesh
+    stays a valid one.  Elsewhere (the point rounded out of the triangles
+    beside ``c``) ``E`` is taken as before.
     """
     xy = m.xy
     nv: Index = m.nvert
@@ -918,7 +1088,26 @@ def _split_at_crossing(
     t, sx, sy = scouted_crossing(
         xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[right, 0], xy[right, 1], xy[left, 0], xy[left, 1]
     )
-    if not (near_right or near_left or near_a or near_b) and t > 0.0 and _scouted_fits(m, c, right, left, sx, sy, px, py, tol):
+    # an input vertex ending c that the crossing is within rounding of (and of no end of a b)
+    end: Index
+    bt: cython.double
+    bx: cython.double
+    by: cython.double
+    end, bt, bx, by = _beside_end(m, a, b, c, plain)
+    beside: cython.bint = False  # Triangle's point beside end, where it splits c cleanly
+    if end >= 0:
+        if bx == xy[end, 0] and by == xy[end, 1]:  # Triangle's copy of end
+            _place_crossing(m, segs, r, nv, bx, by, right, left, bt)
+            return end, False, False, True
+        if (_an_ulp_off(xy[end, 0], xy[end, 1], bx, by) and _within_subsegment(xy, right, left, bx, by)
+                and splits_cleanly(m, c, bx, by)):
+            beside = True
+            t = bt
+            px = bx
+            py = by
+    if beside:
+        pass
+    elif not (near_right or near_left or near_a or near_b) and t > 0.0 and _scouted_fits(m, c, right, left, sx, sy, px, py, tol):
         px = sx
         py = sy
         tol = 2.0**-48 * (fabs(px) + fabs(py)) + 2.0**-1074
@@ -926,28 +1115,29 @@ def _split_at_crossing(
         t = crossing_parameter(
             xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[right, 0], xy[right, 1], xy[left, 0], xy[left, 1]
         )
-    if near_right and _inside(xy, a, b, right):
-        return right, False, False
-    if near_left and _inside(xy, a, b, left):
-        return left, False, False
-    if near_a and _inside(xy, right, left, a):
-        return a, True, False
-    if near_b and _inside(xy, right, left, b):
-        return b, True, False
-    if near_right:
-        return right, False, False
-    if near_left:
-        return left, False, False
-    if near_a:
-        return a, True, False
-    if near_b:
-        return b, True, False
+    if not beside:
+        if near_right and _inside(xy, a, b, right):
+            return right, False, False, False
+        if near_left and _inside(xy, a, b, left):
+            return left, False, False, False
+        if near_a and _inside(xy, right, left, a):
+            return a, True, False, False
+        if near_b and _inside(xy, right, left, b):
+            return b, True, False, False
+        if near_right:
+            return right, False, False, False
+        if near_left:
+            return left, False, False, False
+        if near_a:
+            return a, True, False, False
+        if near_b:
+            return b, True, False, False
     status: cython.int
     e: Index
     if splits_cleanly(m, c, px, py):
         half0: Index = new_record(segs, segs.marker[r], segs.source[r], segs.ends[r, 0], segs.ends[r, 1])
         if half0 < 0:
-            return -1, False, False
+            return -1, False, False, False
         _place_crossing(m, segs, r, nv, px, py, right, left, t)
         lawson_in_place(m, split_edge_in_place(m, c, nv, cython.cast(cython.int, half0), 2))
         _ends_at(segs, r, half0, left, right, nv)
@@ -956,15 +1146,15 @@ def _split_at_crossing(
             segs.ends[half0, 1] = cython.cast(cython.int, nv)
         e = find_edge(m, nv, a)
         if e < 0:
-            return -1, False, False
+            return -1, False, False, False
         mark_subsegment(m, segs, e, marker, source, False)  # e: p -> a, as Triangle's
-        return nv, False, True
+        return nv, False, True, False
     status, e = walk(m, c // 3, px, py, 4 * m.stamp.shape[0] + 64)
     if status == LOC_ON_VERTEX:
-        return m.corner[lnext(e)], True, False
+        return m.corner[lnext(e)], True, False, False
     if status != LOC_INSIDE and status != LOC_ON_EDGE:
         # rounded off the mesh (c is on the boundary): use c's nearer end
-        return (right if t < 0.5 else left), False, False
+        return (right if t < 0.5 else left), False, False, False
     # as near another vertex (one nearly on both lines: a corner of the
     # triangle it falls in, or across c from it): that vertex
     near_v: Index
@@ -980,14 +1170,14 @@ def _split_at_crossing(
             break
         if _near(xy, near_v, px, py, tol):
             if _inside(xy, a, b, near_v) and _inside(xy, right, left, near_v):
-                return near_v, True, False
+                return near_v, True, False, False
             if first_near < 0:
                 first_near = near_v
     if first_near >= 0:
-        return first_near, True, False
+        return first_near, True, False, False
     half: Index = new_record(segs, segs.marker[r], segs.source[r], segs.ends[r, 0], segs.ends[r, 1])
     if half < 0:
-        return -1, False, False
+        return -1, False, False, False
     _place_crossing(m, segs, r, nv, px, py, right, left, t)
     reroute: cython.bint = True
     first: Index
@@ -1012,7 +1202,7 @@ def _split_at_crossing(
     n: Index = star_edges(m, first, stack)
     last: Index = lawson(m, stack, n)
     remember_corners(m, last)
-    return nv, reroute, False
+    return nv, reroute, False, False
 
 
 @cython.cfunc
@@ -1073,6 +1263,7 @@ def insert_segments(m: Mesh, segs: Subsegments, work: Recovery) -> cython.int:
     p: Index
     reroute: cython.bint
     marked: cython.bint
+    copied: cython.bint
     src_c: Index
     marker: cython.int
     e1: Index
@@ -1095,6 +1286,7 @@ def insert_segments(m: Mesh, segs: Subsegments, work: Recovery) -> cython.int:
             or spare_triangles(m) < 8
             or segs.count + 2 > segs.marker.shape[0]
             or work.top + 4 > pieces.shape[0]
+            or work.ncopies >= work.copies.shape[0]
         ):
             return NEED_ROOM
         sp = work.top - 1
@@ -1112,6 +1304,11 @@ def insert_segments(m: Mesh, segs: Subsegments, work: Recovery) -> cython.int:
             work.top = sp
         elif kind == _PIECE_CONTINUES:
             pieces[sp, 0] = v
+        elif kind == _PIECE_COPIED:  # the copy is the last vertex made
+            work.copies[work.ncopies, 0] = m.nvert - 1
+            work.copies[work.ncopies, 1] = v
+            work.ncopies += 1
+            pieces[sp, 0] = v
         elif kind == _PIECE_SHORTENED:
             pieces[sp, 1] = v
         elif kind == _PIECE_BUFFER:
@@ -1123,9 +1320,15 @@ def insert_segments(m: Mesh, segs: Subsegments, work: Recovery) -> cython.int:
             cl = m.corner[lprev(c)]
             e1 = v
             e2 = b if v == a else a
-            p, reroute, marked = _split_at_crossing(m, segs, e1, e2, c, buf, marker, cython.cast(cython.int, src))
+            p, reroute, marked, copied = _split_at_crossing(
+                m, segs, e1, e2, c, buf, marker, cython.cast(cython.int, src), work.plain
+            )
             if p < 0:
                 return NEED_ROOM
+            if copied:
+                work.copies[work.ncopies, 0] = m.nvert - 1
+                work.copies[work.ncopies, 1] = p
+                work.ncopies += 1
             if marked:  # the piece from p to e1 is a subsegment: go on from p
                 if e1 == a:
                     pieces[sp, 0] = p
