@@ -126,17 +126,6 @@ DEFECTS += [
         lambda c, f, n: (f.kind == "size" and _no_segments(c) and not read_switches(c.switches).p
                          and _axis_span(c) < 1e-30),
     ),
-    Defect(
-        "denormal-walk-timeout",
-        "14 random points among which some have coordinates 2^-1022, 2^-149 and 2^-126 beside ones near 1, "
-        "under q10 (tests/differential/open/denormal-walk-timeout.json, kept out of the suite: it runs to the "
-        "20 s CPU deadline; Triangle crashes on it): each Steiner point's walk from its bad triangle crosses "
-        "most of the mesh, so the walks grow quadratically (2.4 million steps at 3,000 vertices, 6 s of CPU; "
-        "python: instrument.triangulate(case, 'q10QS3000')), and the run would reach the vertex limit only "
-        "after hours",
-        lambda c, f, n: (f.kind == "ours-timeout" and _no_segments(c) and read_switches(c.switches).q
-                         and _axis_span(c) < 1e-290),
-    ),
 ]
 
 
