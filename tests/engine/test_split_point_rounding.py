@@ -93,6 +93,14 @@ def test_a_needle_on_a_denormal_edge_runs_out_of_precision(switches):
         instrument.triangulate({"vertices": DENORMAL_PAIR}, switches + "S1000")
 
 
+@pytest.mark.parametrize("switches", ["q10Q", "q30Q"])
+def test_a_needle_on_a_denormal_edge_under_circumcenters_runs_out_of_precision(switches):
+    # the needle's 0.5 / area overflows, so its circumcenter was NaN, the
+    # split skipped as a duplicate, and a mesh with 0-degree needles returned
+    with pytest.raises(PrecisionError, match="shortest edge is too short"):
+        instrument.triangulate({"vertices": DENORMAL_PAIR}, switches + "S1000", steiner="circumcenter")
+
+
 def test_the_denormal_pair_under_an_area_bound_alone_is_valid():
     out = instrument.triangulate({"vertices": DENORMAL_PAIR}, "a0.0001Q")
     assert check_mesh(out, max_area=0.0001) == []
