@@ -101,6 +101,16 @@ def test_a_needle_on_a_denormal_edge_under_circumcenters_runs_out_of_precision(s
         instrument.triangulate({"vertices": DENORMAL_PAIR}, switches + "S1000", steiner="circumcenter")
 
 
+@pytest.mark.parametrize("switches", ["q10Q", "qQ"])
+def test_a_needle_whose_split_point_rounds_onto_its_corner_runs_out_of_precision(switches):
+    # the needle alone: its off-center, computed from the far corner, rounds
+    # onto the corner (XD, 0); skipped as a duplicate, the needle was returned
+    # with its 0-degree angle
+    needle = {"vertices": DENORMAL_PAIR[[0, 2, 3]]}
+    with pytest.raises(PrecisionError, match="shortest edge is too short"):
+        instrument.triangulate(needle, switches)
+
+
 def test_the_denormal_pair_under_an_area_bound_alone_is_valid():
     out = instrument.triangulate({"vertices": DENORMAL_PAIR}, "a0.0001Q")
     assert check_mesh(out, max_area=0.0001) == []

@@ -758,14 +758,29 @@ def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cyth
         a = m.corner[h]  # apex
         b = m.corner[lnext(h)]  # org
         c = m.corner[lprev(h)]  # dest
+        if px != px or py != py:  # NaN
+            m.work[C_DUPLICATE] += 1
+            return DONE
         if (
-            px != px or py != py  # NaN
-            or (px == m.xy[a, 0] and py == m.xy[a, 1])
+            (px == m.xy[a, 0] and py == m.xy[a, 1])
             or (px == m.xy[b, 0] and py == m.xy[b, 1])
             or (px == m.xy[c, 0] and py == m.xy[c, 1])
         ):
-            m.work[C_DUPLICATE] += 1
-            return DONE
+            # on a corner: rounded there, as no off-center or circumcenter
+            # lies at one.  On an end of the shortest edge it is that edge's
+            # collapse (below): computed again from the edge's ends, or
+            # PRECISION.  (Skipped as a duplicate, the needle (0.00149, 0)
+            # (0.00149, 2^-1022) (1.05e-5, 2^-149) stayed in a mesh returned
+            # under q10 with its 0-degree angle.)  Elsewhere (the far corner)
+            # the split is skipped, as Triangle skips a duplicate vertex.
+            bad_edge = _collapsed(m, h, px, py)
+            if bad_edge < 0:
+                m.work[C_DUPLICATE] += 1
+                return DONE
+            if bad_edge == h:
+                break
+            h = bad_edge
+            continue
         steps0 = m.work[C_WALK]
         # Triangle's walk from the handle, or from the edge before it when that
         # puts the point on the inner side of the first edge
