@@ -69,3 +69,49 @@ def test_a_sliver_is_split_along_its_length(area, vertices):
     out = instrument.triangulate(sliver, f"pa{area}Q")
     assert check_mesh(out, pslg=sliver, max_area=float(area)) == []
     assert len(out["vertices"]) == vertices
+
+
+# Two points 2^-1022 apart on the line x = XD (where the next double is 2e-19
+# away) beside two near 1 and one at 2^-149: the shortest edge of every
+# needle on that pair is too short beside XD for any point off it, so no mesh
+# of doubles has the angle. The needles' off-centers, computed again from
+# their shortest edge's ends, rounded onto the edge; the walk from that edge
+# called such a point inside, and the edge was halved without end (2^52
+# doubles deep), each split's walk a little longer: 2.4 million walk steps at
+# 3,000 vertices, the run hours from the vertex limit (the differential
+# harness's campaign: regressions/denormal-needle-midpoint-precision.json;
+# Triangle crashes).
+XD = 0.0014896392822265625
+DENORMAL_PAIR = np.array([[XD, 0.0], [0.09136676788330078, 0.11895487684143616],
+                          [1.049041748046875e-05, 2.0**-149], [XD, 2.0**-1022]])
+
+
+@pytest.mark.parametrize("switches", ["qQ", "q10Q", "q30Q", "cq20Q", "q10a0.001Q"])
+def test_a_needle_on_a_denormal_edge_runs_out_of_precision(switches):
+    # (-S: were the split point placed again, the run ends with a mesh, fast)
+    with pytest.raises(PrecisionError, match="shortest edge is too short"):
+        instrument.triangulate({"vertices": DENORMAL_PAIR}, switches + "S1000")
+
+
+@pytest.mark.parametrize("switches", ["q10Q", "q30Q"])
+def test_a_needle_on_a_denormal_edge_under_circumcenters_runs_out_of_precision(switches):
+    # the needle's 0.5 / area overflows, so its circumcenter was NaN, the
+    # split skipped as a duplicate, and a mesh with 0-degree needles returned
+    with pytest.raises(PrecisionError, match="shortest edge is too short"):
+        instrument.triangulate({"vertices": DENORMAL_PAIR}, switches + "S1000", steiner="circumcenter")
+
+
+@pytest.mark.parametrize("switches", ["q10Q", "qQ"])
+def test_a_needle_whose_split_point_rounds_onto_its_corner_runs_out_of_precision(switches):
+    # the needle alone: its off-center, computed from the far corner, rounds
+    # onto the corner (XD, 0); skipped as a duplicate, the needle was returned
+    # with its 0-degree angle
+    needle = {"vertices": DENORMAL_PAIR[[0, 2, 3]]}
+    with pytest.raises(PrecisionError, match="shortest edge is too short"):
+        instrument.triangulate(needle, switches)
+
+
+def test_the_denormal_pair_under_an_area_bound_alone_is_valid():
+    out = instrument.triangulate({"vertices": DENORMAL_PAIR}, "a0.0001Q")
+    assert check_mesh(out, max_area=0.0001) == []
+    assert any((out["vertices"] == DENORMAL_PAIR[3]).all(axis=1))

@@ -686,12 +686,13 @@ def _start_edge(m: Mesh, h: Index, px: cython.double, py: cython.double) -> tupl
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
-def _right_of(m: Mesh, e: Index, px: cython.double, py: cython.double) -> cython.bint:
-    """Is the point (px, py) strictly right of edge ``e`` (exact)?  A check
-    Triangle does not make, so not counted among the orientation tests."""
+def _side_of(m: Mesh, e: Index, px: cython.double, py: cython.double) -> cython.double:
+    """The side of edge ``e`` the point (px, py) lies on, as orient2d's sign
+    (exact): negative right of it, zero on its line.  A check Triangle does
+    not make, so not counted among the orientation tests."""
     o: Index = m.corner[lnext(e)]
     d: Index = m.corner[lprev(e)]
-    return orient2d(m.xy[o, 0], m.xy[o, 1], m.xy[d, 0], m.xy[d, 1], px, py) < 0.0
+    return orient2d(m.xy[o, 0], m.xy[o, 1], m.xy[d, 0], m.xy[d, 1], px, py)
 
 
 @cython.cfunc
@@ -761,27 +762,46 @@ def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cyth
     start: Index
     steps: cython.longlong
     bad_edge: Index = -1
+    side: cython.double
+    finite: cython.bint
     for attempt in range(2):
         px, py, xi, eta, off = steiner_point(r, m, h)
         m.work[C_CIRCUMCENTER] += 1
         a = m.corner[h]  # apex
         b = m.corner[lnext(h)]  # org
         c = m.corner[lprev(h)]  # dest
+        if px != px or py != py:  # NaN
+            m.work[C_DUPLICATE] += 1
+            return DONE
         if (
-            px != px or py != py  # NaN
-            or (px == m.xy[a, 0] and py == m.xy[a, 1])
+            (px == m.xy[a, 0] and py == m.xy[a, 1])
             or (px == m.xy[b, 0] and py == m.xy[b, 1])
             or (px == m.xy[c, 0] and py == m.xy[c, 1])
         ):
-            m.work[C_DUPLICATE] += 1
-            return DONE
+            # on a corner: rounded there, as no off-center or circumcenter
+            # lies at one.  On an end of the shortest edge it is that edge's
+            # collapse (below): computed again from the edge's ends, or
+            # PRECISION.  (Skipped as a duplicate, the needle (0.00149, 0)
+            # (0.00149, 2^-1022) (1.05e-5, 2^-149) stayed in a mesh returned
+            # under q10 with its 0-degree angle.)  Elsewhere (the far corner)
+            # the split is skipped, as Triangle skips a duplicate vertex.
+            bad_edge = _collapsed(m, h, px, py)
+            if bad_edge < 0:
+                m.work[C_DUPLICATE] += 1
+                return DONE
+            if bad_edge == h:
+                break
+            h = bad_edge
+            continue
         steps0 = m.work[C_WALK]
         # Triangle's walk from the handle, or from the edge before it when that
         # puts the point on the inner side of the first edge
         start = lprev(h) if eta < xi else h
         status = LOC_FAILED
         e = -1
-        if not (fabs(xi) <= 1.7976931348623157e308 and fabs(eta) <= 1.7976931348623157e308) or _right_of(m, start, px, py):
+        finite = fabs(xi) <= 1.7976931348623157e308 and fabs(eta) <= 1.7976931348623157e308
+        side = _side_of(m, start, px, py) if finite else 0.0
+        if not finite or side < 0.0:
             # NaN parameters (a needle spanning 1e-304 .. 1e300), or finite ones
             # that rounding has made meaningless (1e17 for a triangle with sides
             # from 1e-306 to 1e-304, which picked an edge the off-center lay
@@ -791,17 +811,27 @@ def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cyth
             # across any edge of its triangle, even a subsegment (outside the
             # domain)
             start, status, e = _start_edge(m, h, px, py)
+            side = 0.0  # (the new start's side: asked below if the walk stays there)
         if status != LOC_BLOCKED:
             status, e = precise_walk(m, start, px, py, m.stamp.shape[0] + 64)
         if status == LOC_FAILED:
             status, e = line_walk(m, t, px, py, 4 * m.stamp.shape[0] + 64)
         steps = m.work[C_WALK] - steps0
-        # outside its own triangle (rare): make sure rounding has not put the
-        # point on or behind the shortest edge, which no off-center or
-        # circumcenter is (see _collapsed); such a split makes the same bad
-        # triangle again, smaller, without end
+        # outside its own triangle (rare), or on the line of the edge the walk
+        # started from (which the walk does not test, and calls inside): make
+        # sure rounding has not put the point on or behind the shortest edge,
+        # which no off-center or circumcenter is (see _collapsed); such a
+        # split makes the same bad triangle again, smaller, without end.  (14
+        # points under q10 with two of them 2^-1022 apart on the line x =
+        # 0.00149: every needle's off-center, computed again from its
+        # shortest edge's ends, rounded onto that edge, the walk from it
+        # called the point inside, and the edge was halved over and over,
+        # toward the 2^52 doubles between the two: no mesh of doubles has a
+        # 10-degree angle there, regressions/denormal-needle-midpoint-precision.json)
         bad_edge = -1
-        if not (status == LOC_INSIDE and e // 3 == t):
+        if not (status == LOC_INSIDE and e // 3 == t) or (
+            status == LOC_INSIDE and e == start and side == 0.0 and _side_of(m, start, px, py) == 0.0
+        ):
             bad_edge = _collapsed(m, h, px, py)
         if bad_edge < 0 or bad_edge == h:
             break
