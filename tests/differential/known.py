@@ -71,10 +71,12 @@ DEFECTS += [
         "triangle or on an edge, served again when the next vertex remakes them in their records: a subsegment's "
         "split point, or after Chew's deletions (star-size). la.poly under pq30YYa4.79 "
         "(regressions/la-pq30YYa-pool-order-size.json: 181 vertices against 172 before) now makes Triangle's 172, "
-        "with its splits up to split 151, where Triangle serves again a rejected point's entry that the next "
-        "Steiner point (a free vertex, which takes the rejected point's vertex record) remade. Reviving those too "
-        "makes la split for split as Triangle, but on the corpus's trimesh.poly under pq30YY (Triangle: 176,300 "
-        "rejections for 234 vertices) ours' revivals then never end, so they are left out (refine/splits.py). "
+        "and the entries are revived too when the next Steiner point is a free vertex (a circumcenter, which "
+        "takes the rejected point's vertex record; refine/splits.py): the corpus's trimesh.poly under pq30YY "
+        "makes Triangle's 176,585 circumcenters (176,300 rejected, 158,000 of them after its last vertex, all "
+        "served from entries the 6,358 points rejected before it queued) and its 234 vertices, and a mesh of 11 "
+        "vertices under rq34YY (regressions/rq34YY-free-vertex-revival-size.json, campaign seed 2901; 62 "
+        "vertices before) Triangle's 38. "
         "(Later splits of subsegments and triangles fill a cavity with new slots instead of Triangle's records; "
         "after the first list only the order triangles are tested in matters, and the stale records above.)"
         " 11 points within rounding of the line y = x + 0.25 under q30a0.000861Q part at split 5 (134 vertices "
@@ -82,20 +84,12 @@ DEFECTS += [
         "(8.49998e-05, 0.250093) is rejected and the subsegment is split at (8.91089e-05, 0.250089) instead, "
         "Triangle splits the triangle (6.93458e-05, 0.250132) (6.99588e-05, 0.250101) (0.000100017, 0.250100), "
         "whose angles are 43, 93 and 44 degrees (not bad) and which its -VVV never reports queueing: a stale "
-        "record served, which ghosts.py models: regressions/points-collinear-stale-record-size.json passes)."
-        " (3) Under -Y/-YY at 34 degrees and above, where most Steiner points are rejected and nothing is split "
-        "after a rejection, the left-out revival decides the size: a mesh of 11 vertices and 1 segment under "
-        "rq34YY (regressions/rq34YY-free-vertex-revival-size.json, campaign seed 2901) gives 62 vertices against "
-        "Triangle's 37 (bound 40.7); it parts at split 9, where Triangle serves the entry (2601178547.58, 0) "
-        "(2604742050.17, 3700256.34766) (9313254.58906, 7730428.29807) that a rejected point queued, revived when "
-        "the next circumcenter (2597211377.12, 7386581.77468) took that point's vertex record",
+        "record served, which ghosts.py models: regressions/points-collinear-stale-record-size.json passes)",
         lambda c, f, n: f.kind == "size" and (
             # a corpus or sample input, within 5 % of the rule's bound
             (c.family == "realworld" and n.get("vertices", {}).get("ours", 0) <= 1.05 * n.get("size_bound", 0))
             # point sets above 34 degrees (no segments: the hull's splits and rejections alone)
-            or (read_switches(c.switches).angle >= 34 and not np.size(c.input.get("segments", ())))
-            # -Y/-YY above 34 degrees: rejections without splits, revived at the next free vertex
-            or (read_switches(c.switches).angle >= 34 and read_switches(c.switches).Y > 0)),
+            or (read_switches(c.switches).angle >= 34 and not np.size(c.input.get("segments", ())))),
     ),
 ]
 

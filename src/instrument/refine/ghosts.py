@@ -67,6 +67,27 @@ FREED_LAST = cython.declare(cython.longlong, -2)
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
+def _ghost_name(r: Refiner, k: Index) -> Index:
+    """A new record's name (NEW_FIRST, NEW_SECOND) as a pending ghost row
+    stores it, or the name a row stores read back (the same swap both
+    ways; a slot, k >= 0, or a star place is its own name).
+
+    Every rejection of a split that takes two new records swaps the names
+    of all the ghosts waiting (rejected_fan_records).  Under -Y/-YY
+    thousands of points can be rejected in a row (trimesh.poly under
+    pq30YY: 6,358 before its last vertex, and 158,000 after it, each
+    queueing some 25 ghosts): swapping every row made each rejection cost
+    as many steps as ghosts wait, quadratic in all.  The rows store their
+    names relative to one parity, ``r.ghost_swapped``, which a rejection
+    flips instead."""
+    if r.ghost_swapped and (k == NEW_FIRST or k == NEW_SECOND):
+        return NEW_FIRST + NEW_SECOND - k
+    return k
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
 def _lineage(r: Refiner, m: Mesh, top: Index, nb: Index) -> cython.bint:
     """Run the flips from the split's fan triangles on ``r.lineage[:top]``
     (edge, record, orientation; the first to flip on top) over the cavity
@@ -182,17 +203,17 @@ def rejected_fan_records(r: Refiner, m: Mesh, e: Index, on_edge: cython.bint, nb
     earlier rejected point's, for the same vertex record) see the split
     take the two records that point's undo freed, and its own undo free
     them again the other way round (the second one taken is handed out
-    first next: FREED_LAST), so their names swap.  (Without a twin the
-    split on the edge takes one record, and gives it back: nothing swaps.)"""
-    g: Index = r.nghost - 1
-    k: Index
+    first next: FREED_LAST), so their names swap: the rows' parity flips
+    (_ghost_name).  (Without a twin the split on the edge takes one
+    record, and gives it back: nothing swaps.)  The names in
+    ``r.fan_rec`` are the ones the point's ghost rows store."""
     if not on_edge or m.twin[e] != NO_EDGE:
-        while g >= 0 and ghost_pending(r, m, g):
-            k = r.ghost[g, 3]
-            if k == NEW_FIRST or k == NEW_SECOND:
-                r.ghost[g, 3] = NEW_FIRST + NEW_SECOND - k
-            g -= 1
-    return _lineage(r, m, _rejected_split(r, m, e, on_edge), nb)
+        r.ghost_swapped = not r.ghost_swapped
+    if not _lineage(r, m, _rejected_split(r, m, e, on_edge), nb):
+        return False
+    for j in range(nb):
+        r.fan_rec[j, 0] = _ghost_name(r, r.fan_rec[j, 0])
+    return True
 
 
 @cython.ccall
@@ -263,7 +284,7 @@ def revive_ghosts(r: Refiner, m: Mesh, ok: cython.bint, nb: Index) -> cython.voi
         if ok:
             for j in range(nb):
                 if (r.bnd[r.fan[j], 1] == r.ghost[g, 0] and r.bnd[r.fan[j], 2] == r.ghost[g, 1]
-                        and r.fan_rec[j, 0] == r.ghost[g, 3] and r.fan_rec[j, 1] == r.ghost[g, 4]):
+                        and r.fan_rec[j, 0] == _ghost_name(r, r.ghost[g, 3]) and r.fan_rec[j, 1] == r.ghost[g, 4]):
                     live = True
                     break
         ghost_revive(r, g, live)
@@ -376,9 +397,9 @@ def deletion_freed(r: Refiner, m: Mesh, j: Index, d: Index) -> cython.void:
         k = STAR_PLACE - r.ghost[g, 3]
         if r.ghost[g, 3] <= STAR_PLACE:
             if k == j - 1:
-                r.ghost[g, 3] = FREED_LAST
+                r.ghost[g, 3] = _ghost_name(r, FREED_LAST)
             elif k == d - 1:
-                r.ghost[g, 3] = NEW_FIRST + NEW_SECOND - FREED_LAST
+                r.ghost[g, 3] = _ghost_name(r, NEW_FIRST + NEW_SECOND - FREED_LAST)
             else:
                 r.ghost[g, 0] = -1
         g -= 1

@@ -911,14 +911,20 @@ def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cyth
     # vertex (ghosts.note_born).  This vertex takes the vertex record of a
     # point rejected just before (under -Y/-YY nothing is split after one),
     # and Triangle serves again that point's queued triangles it remakes in
-    # their records (la.poly under pq30YYa4.79 splits one so); ghosts.py
-    # could revive them here, but on the corpus's trimesh.poly under pq30YY
-    # (where Triangle itself rejects 176,300 points for 234 vertices) the
-    # revived ghosts' rejections queue more ghosts than Triangle serves,
-    # without end: they are dropped, as before (the vertex made ends them).
+    # their records (ghosts.revive_ghosts): la.poly under pq30YYa4.79 splits
+    # one so, and the rq34YY regression (free-vertex-revival) parts without.
+    # The entries so served are split whether bad or not, and their points
+    # mostly rejected, each queueing its fan for the next vertex made: on
+    # the corpus's trimesh.poly under pq30YY Triangle rejects 176,300 points
+    # for 234 vertices, 158,000 of them after its last vertex, all served
+    # from the 6,358 points rejected before it.  The loop is bounded as
+    # Triangle's is: between two vertices made, only entries live when the
+    # first was made can be served (a rejected point's wait for the next),
+    # so each run of rejections ends, and vertices are bounded as before.
     records: cython.bint = False
     if r.cfg.strategy == TRIANGLE:
         records = insertion_records(r, m, e, status == LOC_ON_EDGE, nb)
+        revive_ghosts(r, m, records, nb)
     # attributes: barycentric in (org, dest, apex)
     v: Index = new_vertex(m, px, py, V_FREE, 0, b, c, a, xi, eta)
     fill_cavity(r, m, v, n, nb)

@@ -55,6 +55,7 @@ cdef class Refiner:
     # bucket log entry with htri = -1 - row is one of them
     cdef public long long[:, ::1] ghost
     cdef public Index nghost         # rows in use
+    cdef public bint ghost_swapped   # the pending rows' new-record names read swapped (ghosts.ghost_name)
     # the encroached-subsegment pool (encroach.py)
     cdef public long long[:, ::1] enc  # (E, 4): ends (-1: free slot), edge, its triangle's stamp
     cdef public Index enc_live       # records in the pool

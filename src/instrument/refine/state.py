@@ -118,6 +118,7 @@ class Refiner:
         self.log_length = 0
         self.compact_at = 0
         self.nghost = 0
+        self.ghost_swapped = False
         self.nflips = 0
         self.enc_live = 0
         self.enc_fresh = 0
