@@ -26,7 +26,7 @@ def test_the_documented_formula():
     assert limits.memory_ceiling() >= limits.MIN_LIMIT
 
 
-@pytest.mark.parametrize("angle", [36, 40])
+@pytest.mark.parametrize("angle", [40])
 def test_steep_angles_stop_at_the_limit(angle):
     with pytest.raises(SizeLimitError) as info:
         instrument.triangulate(LETTER_A, f"pq{angle}", max_vertices=5_000)
@@ -39,14 +39,19 @@ def test_steep_angles_stop_at_the_limit(angle):
     assert isinstance(info.value, RuntimeError) and isinstance(info.value, ValueError)
 
 
-def test_a_steeper_angle_may_run_out_of_precision_first_and_says_why():
+@pytest.mark.parametrize("angle", [36, 60])
+def test_a_steeper_angle_may_run_out_of_precision_first_and_says_why(angle):
     """At 60 degrees refinement splits towards one corner of A until the
-    pieces are too short for doubles: a clear error that names the cause."""
+    pieces are too short for doubles; at 36 its off-centers close in on a
+    point inside A (0.5966, -0.4447) within 3,040 vertices until a bad
+    triangle's split point rounds onto its shortest edge (since stop 30 an
+    error, no longer a duplicate skipped while the mesh kept a 0-degree
+    needle).  Either way a clear error that names the cause."""
     with pytest.raises(TriangleError) as info:
-        instrument.triangulate(LETTER_A, "pq60", max_vertices=5_000)
+        instrument.triangulate(LETTER_A, f"pq{angle}", max_vertices=5_000)
     text = str(info.value)
     assert text.startswith("Refinement stopped at ") or text.startswith("Ran out of precision at ")
-    assert "60 degrees is above 34" in text and "a smaller angle" in text
+    assert f"{angle} degrees is above 34" in text and "a smaller angle" in text
 
 
 def test_the_default_limit_stops_too(monkeypatch):

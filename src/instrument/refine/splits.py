@@ -745,7 +745,8 @@ def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cyth
     is pooled).  A point that cannot be placed strictly inside its cavity
     (on a vertex, or rounded onto or across an edge) leaves the triangle
     unsplit.  Returns DONE, NEED_ROOM (nothing changed) or PRECISION (the
-    point rounded onto the triangle's shortest edge: see _collapsed)."""
+    point rounded onto the triangle's shortest edge, and that edge is not a
+    subsegment, which it would encroach: see _collapsed)."""
     step_begins(r, m.work)
     t: Index = h // 3
     px: cython.double
@@ -840,6 +841,21 @@ def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cyth
         # once more from the edge's own ends (the same point, other roundings;
         # Triangle meshes such triangles)
         h = bad_edge
+    if bad_edge >= 0 and m.seg[bad_edge] != NO_SEG:
+        # rounded onto (or across) a subsegment: the point encroaches it, as
+        # Triangle finds (its walk stops there), so the subsegment is split
+        # where it may be and the point rejected.  Under -Y a hull subsegment
+        # stays whole and so does its triangle: the points (2^-126, 1)
+        # (1.5 * 2^-399, 1) (3.66e-4, 0.125) under q25Y, one triangle, as
+        # Triangle's (regressions/hull-needle-rounds-onto-subsegment.json)
+        if may_split(r, m, bad_edge):
+            if r.enc_live + 1 > r.enc.shape[0]:
+                step_undone(r, m.work)
+                return NEED_ROOM
+            enc_push(r, m, bad_edge)
+        m.work[C_REJECTED] += 1
+        trace_row(r, T_REJECTED, 0, 0, 0, r.hsize)
+        return DONE
     if bad_edge >= 0:
         r.error_org = m.corner[lnext(bad_edge)]
         r.error_dest = m.corner[lprev(bad_edge)]
