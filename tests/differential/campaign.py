@@ -114,11 +114,11 @@ class Campaign:
             "notes": {k: v for k, v in verdict.notes.items() if k not in ("triangle", "ours")},
         }
 
-    def run_chunk(self, n: int, seed_value: int) -> None:
+    def run_chunk(self, n: int, seed_value: int, only: tuple[str, ...] = families.FAMILIES) -> None:
         @seed(seed_value)
         @settings(max_examples=n, deadline=None, database=None, phases=[Phase.generate],
                   suppress_health_check=list(HealthCheck))
-        @given(case=families.cases())
+        @given(case=families.cases(only))
         def test(case):
             self.one(case)
 
@@ -173,7 +173,10 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--confirmations", type=int, default=1,
                     help="fresh-process confirmations per failure signature (crashes are always confirmed)")
     ap.add_argument("--ours-timeout", type=float, default=20.0, help="seconds before ours counts as hung")
+    ap.add_argument("--family", action="append", choices=families.FAMILIES,
+                    help="draw from this family only (repeatable; default: every family)")
     args = ap.parse_args(argv)
+    only = tuple(args.family) if args.family else families.FAMILIES
     args.out.mkdir(parents=True, exist_ok=True)
     runners = Runners(ours_timeout=args.ours_timeout)
     camp = Campaign(args.out, runners, args.shrink_budget)
@@ -182,7 +185,7 @@ def main(argv: list[str] | None = None) -> int:
     chunk = 0
     try:
         while camp.cases < args.cases:
-            camp.run_chunk(min(args.chunk, args.cases - camp.cases), args.seed * 1_000_003 + chunk)
+            camp.run_chunk(min(args.chunk, args.cases - camp.cases), args.seed * 1_000_003 + chunk, only)
             chunk += 1
             camp.shrink_new()
             s = camp.summary(time.perf_counter() - t0)

@@ -35,6 +35,7 @@ PSLG_FAMILIES = (
     "near-collinear-chain",
     "regions",
     "crossing-segments",
+    "concurrent-segments",
     "duplicate-points",
     "hole-points-off",
 )
@@ -244,6 +245,50 @@ def crossing_segments(draw):
     return {"vertices": pts, "segments": segs}
 
 
+def _rounded_crossing(p, q, r, t):
+    """Where segments p q and r t cross, computed in doubles as a user's
+    program would (None if they are parallel): the point lies within rounding
+    of both lines, on either side of each."""
+    d1 = (q[0] - p[0], q[1] - p[1])
+    d2 = (t[0] - r[0], t[1] - r[1])
+    den = d1[0] * d2[1] - d1[1] * d2[0]
+    if den == 0.0:
+        return None
+    a = ((r[0] - p[0]) * d2[1] - (r[1] - p[1]) * d2[0]) / den
+    return (p[0] + a * d1[0], p[1] + a * d1[1])
+
+
+@st.composite
+def concurrent_segments(draw):
+    """Segments that meet another two where those cross: ending at, or
+    passing through, their crossing computed in doubles (a drawing whose
+    program joined lines at their computed intersection), and moved from it
+    by a few units in the last place.  The three are concurrent within
+    rounding, so the crossing Triangle makes lies an ulp or two from the
+    third segment's end or line (campaign cases of stop 30 and 31: a
+    TriangleError where Triangle meshes)."""
+    pts = [(draw(unit), draw(unit)) for _ in range(4)]
+    segs = [(0, 1), (2, 3)]
+    if draw(st.booleans()):
+        pts += [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]
+        segs += _cycle(4, 4)
+    for _ in range(draw(st.integers(1, 3))):
+        i, j = draw(st.sampled_from([(a, b) for a in range(len(segs)) for b in range(a + 1, len(segs))]))
+        x = _rounded_crossing(pts[segs[i][0]], pts[segs[i][1]], pts[segs[j][0]], pts[segs[j][1]])
+        if x is None or not all(math.isfinite(c) and abs(c) < 4.0 for c in x):
+            continue
+        k = draw(st.integers(-2, 2))
+        x = (x[0] + k * math.ulp(x[0]), x[1] + draw(st.integers(-2, 2)) * math.ulp(x[1]))
+        far = (draw(unit), draw(unit))
+        b = len(pts)
+        if draw(st.booleans()):  # ending there
+            pts += [x, far]
+        else:  # passing through, on to the mirror of ``far``
+            pts += [far, (2.0 * x[0] - far[0], 2.0 * x[1] - far[1])]
+        segs.append((b, b + 1))
+    return {"vertices": pts, "segments": segs}
+
+
 @st.composite
 def duplicate_points(draw):
     base = draw(polygon_holes())
@@ -313,6 +358,7 @@ _GENERATORS = {
     "near-collinear-chain": near_collinear_chain,
     "regions": regions,
     "crossing-segments": crossing_segments,
+    "concurrent-segments": concurrent_segments,
     "duplicate-points": duplicate_points,
     "hole-points-off": hole_points_off,
     "holes-at-two-vertices": holes_at_two_vertices,
