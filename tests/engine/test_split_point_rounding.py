@@ -123,3 +123,23 @@ def test_the_denormal_pair_under_an_area_bound_alone_is_valid():
     out = instrument.triangulate({"vertices": DENORMAL_PAIR}, "a0.0001Q")
     assert check_mesh(out, max_area=0.0001) == []
     assert any((out["vertices"] == DENORMAL_PAIR[3]).all(axis=1))
+
+
+# A needle whose short edge, 2.3e-271 long near the origin, has its far corner
+# 3.4e-27 away: its longest edge is in range, so the circumcenter was computed
+# unscaled, where the short edge's square (4e-542) and every product placing
+# the circumcenter along it vanish to 0; the circumcenter then won against
+# the off-center at the short edge's org, and the split ran out of precision
+# (the needle of FAR_CORNER_CASE in test_mixed_scale_refinement.py, here
+# inside two points 1e-26 away).  Doubles hold its off-center and its
+# circumcenter, computed from the short edge's ends (criteria.steiner_point).
+FAR_NEEDLE = np.array([[2.0113627935003086e-271, -3.733237141971085e-272], [0.0, -7.46647428394217e-272],
+                       [-5.252429815216489e-148, -3.44324249045832e-27], [1e-26, 1e-27], [-1e-26, 1e-27]])
+
+
+@pytest.mark.parametrize(("switches", "angle", "steiner"), [
+    ("qQ", 20.0, "offcenter"), ("q30Q", 30.0, "offcenter"), ("qQ", 20.0, "circumcenter"),
+])
+def test_a_needle_beside_a_far_corner_is_split_where_doubles_hold_the_point(switches, angle, steiner):
+    out = instrument.triangulate({"vertices": FAR_NEEDLE}, switches, steiner=steiner)
+    assert check_mesh(out, min_angle=angle) == []
