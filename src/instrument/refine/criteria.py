@@ -338,7 +338,9 @@ def steiner_point(r: Refiner, m: Mesh, h: Index) -> tuple[cython.double, cython.
     n1: cython.double = max(fabs(xdo0), fabs(ydo0))
     n2: cython.double = max(fabs(xao0), fabs(yao0))
     n3: cython.double = max(fabs(xda0), fabs(yda0))
-    needle: cython.bint = min(min(n1, n2), n3) < NEEDLE * max(max(n1, n2), n3)
+    longest: cython.double = max(max(n1, n2), n3)
+    # (an edge beyond the doubles, 1e308 - -1e308, is no needle's: as before)
+    needle: cython.bint = longest <= 1.7976931348623157e308 and min(min(n1, n2), n3) < NEEDLE * longest
     # ... and so is its circumcenter (under circumcenters, or where the
     # off-center is not closer), from the short edge's ends and each scale
     # apart: the formula above vanishes to the short edge's org
