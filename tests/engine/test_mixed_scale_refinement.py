@@ -154,11 +154,19 @@ FAR_CORNER_CASE = {
 }
 
 
-@pytest.mark.parametrize("switches", ["qYQ", "qQ"])
-def test_an_edge_beside_far_corners_is_split_from_its_own_ends(switches):
-    # valid (two needles 1e-272 wide beside 1e255 keep their angles: Triangle,
-    # whose tests overflow there, does not refine this input at all)
-    out = _run(FAR_CORNER_CASE, switches, 0.0)
+@pytest.mark.parametrize("switches, angle", [("qYQ", 0.0), ("qQ", 20.0)])
+def test_an_edge_beside_far_corners_is_split_from_its_own_ends(switches, angle):
+    """Valid; under -Y two needles 1e-272 wide beside 1e255 keep their
+    angles (Triangle, whose tests overflow there, does not refine this input
+    at all).  Without -Y the mesh meets the angle (5,246 vertices): the
+    needle (2.01e-271, -3.73e-272) (0, -7.47e-272) (-5.25e-148, -3.44e-27)
+    has its short edge's square, 4e-542, and every product that places its
+    circumcenter vanish to 0 (its longest edge, 3.4e-27, needs no scaling),
+    so the circumcenter came out "closer" than the off-center, on the org:
+    a PrecisionError (before, a duplicate skipped and a 0-degree needle
+    kept).  A needle's Steiner point is now computed from its short edge's
+    ends (criteria.steiner_point)."""
+    out = _run(FAR_CORNER_CASE, switches, angle)
     assert "error" not in out, out
     assert out["problems"] == [], out
 

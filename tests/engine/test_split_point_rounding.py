@@ -96,8 +96,13 @@ def test_a_needle_on_a_denormal_edge_runs_out_of_precision(switches):
 @pytest.mark.parametrize("switches", ["q10Q", "q30Q"])
 def test_a_needle_on_a_denormal_edge_under_circumcenters_runs_out_of_precision(switches):
     # the needle's 0.5 / area overflows, so its circumcenter was NaN, the
-    # split skipped as a duplicate, and a mesh with 0-degree needles returned
-    with pytest.raises(PrecisionError, match="shortest edge is too short"):
+    # split skipped as a duplicate, and a mesh with 0-degree needles returned.
+    # Since the needle's circumcenter is computed from its short edge's ends
+    # (criteria._needle_circumcenter) it is placed, half the needle's length
+    # away; the needles it leaves on the pair encroach the hull subsegment
+    # (XD, 0) (XD, 2^-1022), halved to adjacent doubles: a segment too short
+    # to split (the pair has no mesh of doubles with the angle either way)
+    with pytest.raises(PrecisionError, match="a segment to a smaller size"):
         instrument.triangulate({"vertices": DENORMAL_PAIR}, switches + "S1000", steiner="circumcenter")
 
 
@@ -118,3 +123,23 @@ def test_the_denormal_pair_under_an_area_bound_alone_is_valid():
     out = instrument.triangulate({"vertices": DENORMAL_PAIR}, "a0.0001Q")
     assert check_mesh(out, max_area=0.0001) == []
     assert any((out["vertices"] == DENORMAL_PAIR[3]).all(axis=1))
+
+
+# A needle whose short edge, 2.3e-271 long near the origin, has its far corner
+# 3.4e-27 away: its longest edge is in range, so the circumcenter was computed
+# unscaled, where the short edge's square (4e-542) and every product placing
+# the circumcenter along it vanish to 0; the circumcenter then won against
+# the off-center at the short edge's org, and the split ran out of precision
+# (the needle of FAR_CORNER_CASE in test_mixed_scale_refinement.py, here
+# inside two points 1e-26 away).  Doubles hold its off-center and its
+# circumcenter, computed from the short edge's ends (criteria.steiner_point).
+FAR_NEEDLE = np.array([[2.0113627935003086e-271, -3.733237141971085e-272], [0.0, -7.46647428394217e-272],
+                       [-5.252429815216489e-148, -3.44324249045832e-27], [1e-26, 1e-27], [-1e-26, 1e-27]])
+
+
+@pytest.mark.parametrize(("switches", "angle", "steiner"), [
+    ("qQ", 20.0, "offcenter"), ("q30Q", 30.0, "offcenter"), ("qQ", 20.0, "circumcenter"),
+])
+def test_a_needle_beside_a_far_corner_is_split_where_doubles_hold_the_point(switches, angle, steiner):
+    out = instrument.triangulate({"vertices": FAR_NEEDLE}, switches, steiner=steiner)
+    assert check_mesh(out, min_angle=angle) == []

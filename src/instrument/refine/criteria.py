@@ -30,6 +30,11 @@ from cython.cimports.instrument.refine.state import Refiner
 
 _INF = cython.declare(cython.double, float("inf"))
 
+#: A triangle whose shortest edge is below this fraction of its longest is a
+#: needle (an angle below 2^-299 radians): split at its off-center, computed
+#: from that edge's ends (steiner_point).
+NEEDLE = cython.declare(cython.double, 2.0**-300)
+
 
 @cython.cfunc
 @cython.nogil
@@ -219,6 +224,33 @@ def builtin_unsuitable(m: Mesh, o: Index, d: Index, a: Index) -> cython.bint:
     return max(od, da, ao) > 0.05 * (m.xy[o, 0] * m.xy[o, 0] + m.xy[o, 1] * m.xy[o, 1]) + 0.02
 
 
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _needle_circumcenter(
+    px: cython.double, py: cython.double, qx: cython.double, qy: cython.double, wx: cython.double, wy: cython.double,
+) -> tuple[cython.double, cython.double]:
+    """The circumcenter of a needle whose short edge is p q, apex w: the
+    midpoint of p q plus k times the edge turned left, with k from the
+    apex's vector u = w - p and the edge e = q - p each scaled by its own
+    power of two (``g``, ``h``), so that no product leaves the doubles'
+    range however far apart the two scales are:
+    k = (|u|^2 - u.e) / (2 e x u) = (|u_s|^2 / g - u_s.e_s / h) / (2 e_s x u_s).
+    Infinite or NaN where the circumcenter is beyond the doubles."""
+    ex: cython.double = qx - px
+    ey: cython.double = qy - py
+    ux: cython.double = wx - px
+    uy: cython.double = wy - py
+    h: cython.double = unit_scale(max(fabs(ex), fabs(ey)))
+    g: cython.double = unit_scale(max(fabs(ux), fabs(uy)))
+    esx: cython.double = ex * h
+    esy: cython.double = ey * h
+    usx: cython.double = ux * g
+    usy: cython.double = uy * g
+    k: cython.double = ((usx * usx + usy * usy) / g - (usx * esx + usy * esy) / h) / (2.0 * orient2d(esx, esy, usx, usy, 0.0, 0.0))
+    return px + 0.5 * ex - k * esy, py + 0.5 * ey + k * esx
+
+
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
@@ -291,27 +323,61 @@ def steiner_point(r: Refiner, m: Mesh, h: Index) -> tuple[cython.double, cython.
     # (tests/engine/test_split_point_rounding.py), whose 0.5 / area overflows,
     # stayed in a mesh returned as if it met the angle.
     far: cython.bint = dx != dx or dy != dy
+    # A needle (shortest edge below 2^-300 of the longest, by the edges'
+    # largest components, which need no products): its circumcenter is
+    # about half a long edge away, its off-center within three short edges
+    # of the short edge, so the off-center it is (as the squares below
+    # would decide, were they in range).  The squares of the short edge and the products
+    # that place the circumcenter along it vanish below the doubles' range
+    # even where the long edges are in it (an edge 2e-271 long beside a
+    # corner 3.4e-27 away: all 0, the circumcenter "closer" at the org, a
+    # split point on the org, and a PrecisionError for a needle whose
+    # off-center doubles hold), so the needle's short edge is the one of
+    # least largest component, and its off-center is computed from its own
+    # ends (below), not from the far corner.
+    n1: cython.double = max(fabs(xdo0), fabs(ydo0))
+    n2: cython.double = max(fabs(xao0), fabs(yao0))
+    n3: cython.double = max(fabs(xda0), fabs(yda0))
+    longest: cython.double = max(max(n1, n2), n3)
+    # (an edge beyond the doubles, 1e308 - -1e308, is no needle's: as before)
+    needle: cython.bint = longest <= 1.7976931348623157e308 and min(min(n1, n2), n3) < NEEDLE * longest
+    # ... and so is its circumcenter (under circumcenters, or where the
+    # off-center is not closer), from the short edge's ends and each scale
+    # apart: the formula above vanishes to the short edge's org
+    cx: cython.double = 0.0
+    cy: cython.double = 0.0
+    if needle:
+        if n1 <= n2 and n1 <= n3:
+            cx, cy = _needle_circumcenter(ox, oy, m.xy[d, 0], m.xy[d, 1], m.xy[a, 0], m.xy[a, 1])
+        elif n2 <= n3:
+            cx, cy = _needle_circumcenter(ox, oy, m.xy[a, 0], m.xy[a, 1], m.xy[d, 0], m.xy[d, 1])
+        else:
+            cx, cy = _needle_circumcenter(m.xy[d, 0], m.xy[d, 1], m.xy[a, 0], m.xy[a, 1], ox, oy)
+        far = not (fabs(cx) <= 1.7976931348623157e308 and fabs(cy) <= 1.7976931348623157e308)
+        if not far:
+            dx = (cx - ox) * f
+            dy = (cy - oy) * f
     if (r.cfg.offcenter or far) and c > 0.0:
-        if dodist < aodist and dodist < dadist:
+        if (dodist < aodist and dodist < dadist) if not needle else (n1 < n2 and n1 < n3):
             fx = 0.5 * xdo - c * ydo
             fy = 0.5 * ydo + c * xdo
-            if fx * fx + fy * fy < dx * dx + dy * dy or far:
+            if fx * fx + fy * fy < dx * dx + dy * dy or far or needle:
                 dx, dy, off, which = fx, fy, True, 1
-        elif aodist < dadist:
+        elif (aodist < dadist) if not needle else n2 < n3:
             fx = 0.5 * xao + c * yao
             fy = 0.5 * yao - c * xao
-            if fx * fx + fy * fy < dx * dx + dy * dy or far:
+            if fx * fx + fy * fy < dx * dx + dy * dy or far or needle:
                 dx, dy, off, which = fx, fy, True, 2
         else:
             ex = -xda
             ey = -yda
             fx = 0.5 * ex - c * ey
             fy = 0.5 * ey + c * ex
-            if fx * fx + fy * fy < (dx - xdo) * (dx - xdo) + (dy - ydo) * (dy - ydo) or far:
+            if fx * fx + fy * fy < (dx - xdo) * (dx - xdo) + (dy - ydo) * (dy - ydo) or far or needle:
                 dx, dy, off, which = xdo + fx, ydo + fy, True, 3
     xi: cython.double = (yao * dx - xao * dy) * (2.0 * denom)
     eta: cython.double = (xdo * dy - ydo * dx) * (2.0 * denom)
-    if f != 1.0 and off:
+    if (f != 1.0 or needle) and off:
         # from the unscaled edge (degree 1: nothing overflows): an edge that
         # is tiny beside the triangle's longest vanishes when scaled, and its
         # off-center would land on its end (1e-303 edges under 1e300 ones);
@@ -327,6 +393,8 @@ def steiner_point(r: Refiner, m: Mesh, h: Index) -> tuple[cython.double, cython.
             # from d itself: with o far from d (1e226 against 1e64), o +
             # ((d - o) + offset) loses the offset, or d (1e299 against 1e-302)
             return m.xy[d, 0] + (0.5 * -xda0 - c * -yda0), m.xy[d, 1] + (0.5 * -yda0 + c * -xda0), xi, eta, off
+    elif needle and not far:
+        return cx, cy, xi, eta, off
     elif f != 1.0:
         dx = dx / f
         dy = dy / f
