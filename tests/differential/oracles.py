@@ -409,6 +409,22 @@ def dropped_vertices(result: dict, tri: dict) -> list[int]:
     return lost
 
 
+def unused_points(result: dict, tri: dict) -> list[int]:
+    """Without ``p`` or ``r`` the mesh is the Delaunay triangulation of the
+    points: every input point is a corner of it (a duplicate through its
+    twin's coordinates), unless all are collinear (no triangle).  The input
+    points this one leaves out.  (Triangle's orientation test is exact only
+    while its products stay normal: (1.6e-319, 1.2e-33) (0, 0) (1.2e-30,
+    1.2e-30) (0, 1.2e-30) gives it one triangle, without (0, 0), whose
+    corners do not span the points' hull; concurrent-segments, seed 2.)"""
+    out = _vertices(result)
+    t = _arr(result, "triangles", 3)[:, :3].astype(np.int64)
+    if not len(t):
+        return []
+    corners = {tuple(p) for p in out[np.unique(t)].tolist()}
+    return [i for i, p in enumerate(_vertices(tri).tolist()) if tuple(p) not in corners]
+
+
 def triangle_meets_angle(result: dict, pslg, angle: float) -> bool:
     try:
         rep = quality_report(result, pslg, angle)
@@ -451,6 +467,8 @@ def _judge(case: Case, tri: Outcome, ours: Outcome, spread) -> Verdict:
             # regressions/crossing-through-vertex-counts.json); ours is
             # judged by the same test below
             t_probs = [f"input vertices {lost[:5]} lie in Triangle's mesh but are not vertices of it"]
+        if not t_probs and not sw.p and not sw.r and (lost := unused_points(tri.result, case.input)):
+            t_probs = [f"input points {lost[:5]} are corners of no triangle of Triangle's point-set triangulation"]
         if t_probs:
             v.notes["triangle_invalid"] = t_probs[:3]
             t_ok = False
@@ -518,6 +536,8 @@ def _judge(case: Case, tri: Outcome, ours: Outcome, spread) -> Verdict:
         v.fail("invalid-mesh", _problem_kind(probs[0]), "; ".join(probs[:4]))
     if lost := dropped_vertices(res, case.input):
         v.fail("dropped-vertex", "", f"input vertices {lost[:5]} lie in ours' mesh but are not vertices of it")
+    if not sw.p and not sw.r and (lost := unused_points(res, case.input)):
+        v.fail("dropped-vertex", "points", f"input points {lost[:5]} are corners of no triangle of ours")
     if sw.p and not sw.c and not sw.r and (phantom := phantom_segments(res, case.input)):
         v.fail("phantom-segment", "", f"{len(phantom)} output segments of ours lie on no input segment "
                f"(first: {_arr(res, 'segments', 2)[phantom[0]].tolist()})")
