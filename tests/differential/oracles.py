@@ -425,6 +425,72 @@ def unused_points(result: dict, tri: dict) -> list[int]:
     return [i for i, p in enumerate(_vertices(tri).tolist()) if tuple(p) not in corners]
 
 
+def bent_at_input_vertices(result: dict, tri: dict) -> list[int]:
+    """Input vertices at which the output's subsegments bend an input
+    segment: a subsegment ends at the vertex and lies along the segment
+    within rounding (the vertex is within ``phantom_segments``' tolerance of
+    the segment, strictly between its ends), yet the vertex is not exactly on
+    the segment.  Triangle's orientation test is exact only while its
+    products stay normal: beside (1.6e-319, 1.2e-33) the side x = 0 of a
+    square of side 1.2e-30 is split at that vertex (its orientation
+    underflows to 0), where the exact answer leaves the side whole
+    (concurrent-segments, seed 2)."""
+    segs = _arr(result, "segments", 2).astype(np.int64)
+    ins = np.asarray(tri.get("segments", np.zeros((0, 2))), dtype=np.int64).reshape(-1, 2)
+    if not len(segs) or not len(ins):
+        return []
+    iv, ov = _vertices(tri), _vertices(result)
+    where = {tuple(p): i for i, p in enumerate(iv.tolist())}
+    ends = np.unique(segs)
+    candidates = [(int(o), where[tuple(ov[o])]) for o in ends.tolist() if tuple(ov[o]) in where]
+    bent = set()
+    for o, i in candidates:
+        p = iv[i]
+        for a, b in ins.tolist():
+            if i in (a, b) or not _on_segment_loosely(iv[a], iv[b], p):
+                continue
+            if orient_exact(tuple(iv[a]), tuple(iv[b]), tuple(p)) != 0:
+                bent.add(i)
+    return sorted(bent)
+
+
+def _on_segment_loosely(a, b, p, rtol: float = 1e-9) -> bool:
+    """``p`` within ``rtol`` of segment ``a b``'s length of its line,
+    strictly between its ends (coordinates scaled by a power of two)."""
+    big = float(max(np.abs(a).max(), np.abs(b).max(), np.abs(p).max()))
+    if not math.isfinite(big) or big == 0:
+        return False
+    k = -math.frexp(big)[1]
+    a, b, p = np.ldexp(a, k), np.ldexp(b, k), np.ldexp(p, k)
+    d = b - a
+    length2 = float(d @ d)
+    if length2 == 0:
+        return False
+    cross = d[0] * (p[1] - a[1]) - d[1] * (p[0] - a[0])
+    t = float(d @ (p - a)) / length2
+    return abs(cross) <= rtol * math.sqrt(length2) and 0.0 < t < 1.0
+
+
+def reflex_hull_vertices(result: dict) -> list[int]:
+    """Boundary vertices of a point set's triangulation where the boundary
+    turns right, exactly: the triangles do not cover the points' convex
+    hull.  (Under Triangle's underflowing orientation test (1.6e-319,
+    1.2e-33) lies on the side x = 0 of the square of side 1.2e-30; it is
+    inside, and the hull runs past it.)"""
+    t = _arr(result, "triangles", 3)[:, :3].astype(np.int64)
+    if not len(t):
+        return []
+    xy = _vertices(result)
+    directed = np.concatenate([t[:, [0, 1]], t[:, [1, 2]], t[:, [2, 0]]])
+    if orient_exact(*(tuple(xy[k]) for k in t[0].tolist())) < 0:
+        directed = directed[:, ::-1]  # clockwise triangles: turn the boundary round
+    inner = {tuple(e) for e in directed.tolist()}
+    nxt = {a: b for a, b in directed.tolist() if (b, a) not in inner}
+    prev = {b: a for a, b in nxt.items()}
+    return sorted(v for v, n in nxt.items()
+                  if v in prev and orient_exact(tuple(xy[prev[v]]), tuple(xy[v]), tuple(xy[n])) < 0)
+
+
 def triangle_meets_angle(result: dict, pslg, angle: float) -> bool:
     try:
         rep = quality_report(result, pslg, angle)
@@ -469,6 +535,14 @@ def _judge(case: Case, tri: Outcome, ours: Outcome, spread) -> Verdict:
             t_probs = [f"input vertices {lost[:5]} lie in Triangle's mesh but are not vertices of it"]
         if not t_probs and not sw.p and not sw.r and (lost := unused_points(tri.result, case.input)):
             t_probs = [f"input points {lost[:5]} are corners of no triangle of Triangle's point-set triangulation"]
+        if (not t_probs and not sw.p and not sw.r and not ordinary_scale(case.input)
+                and (reflex := reflex_hull_vertices(tri.result))):
+            t_probs = [f"Triangle's point-set triangulation turns inward at {len(reflex)} hull vertices "
+                       "(it does not cover the points' convex hull)"]
+        if (not t_probs and sw.p and not ordinary_scale(case.input)
+                and (bent := bent_at_input_vertices(tri.result, case.input))):
+            t_probs = [f"Triangle's subsegments bend input segments at input vertices {bent[:5]}, "
+                       "which are not exactly on them"]
         if t_probs:
             v.notes["triangle_invalid"] = t_probs[:3]
             t_ok = False
