@@ -129,7 +129,7 @@ def assemble(ms, inp: dict, o) -> Result:
         constrained = listed_edges(m, constrained=True)
         ends = np.empty((constrained.size, 2), dtype=np.int32)
         marks = np.empty((constrained.size, 1), dtype=np.int32)
-        subsegment_rows(m, constrained, new_id, ms.segs.marker, ends, marks)
+        subsegment_rows(m, ms.segs, constrained, new_id, ends, marks)
         _put(out, "segments", ends)
         if not o.B:
             _put(out, "segment_markers", marks)
