@@ -404,7 +404,7 @@ def finish(ms: MeshState, r: Refiner, user: Callable | None = None, guard: Calla
         if status == PRECISION:
             raise _precision_error(m, r.error_org, r.error_dest, r.error_apex)
         grow_refiner(ms, r)
-    ms.dead = np.flatnonzero(np.asarray(m.vtype)[: m.nvert] == V_DEAD)
+    ms.dead = (np.asarray(m.vtype)[: m.nvert] == V_DEAD).nonzero()[0]  # (flatnonzero, without its wrappers)
 
 
 def _precision_error(m, a: int, b: int, apex: int = -1) -> PrecisionError:
