@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from .core.filled import filled
 from .core.mesh import NO_EDGE, NO_SEG
 from .core.gather import kept_vertices, live_slots, number_vertices, subsegment_rows, triangle_corners
 from .core.navigate import edge_ends, list_edges
@@ -72,7 +73,7 @@ def assemble(ms, inp: dict, o) -> Result:
         if ms.collinear:  # no triangle ever existed: only duplicates are unused
             keep[: ms.n_input] = ms.dup < 0
     else:
-        keep = np.ones(nv, dtype=np.uint8)
+        keep = filled(nv, 1, np.uint8)  # (np.ones: the same through two more Python calls)
     if ms.dead is not None and ms.dead.size:
         keep[ms.dead] = 0
     new_id = np.empty(nv, dtype=np.int32)  # the identity when every vertex is kept
@@ -129,7 +130,7 @@ def assemble(ms, inp: dict, o) -> Result:
         constrained = listed_edges(m, constrained=True)
         ends = np.empty((constrained.size, 2), dtype=np.int32)
         marks = np.empty((constrained.size, 1), dtype=np.int32)
-        subsegment_rows(m, constrained, new_id, ms.segs.marker, ends, marks)
+        subsegment_rows(m, ms.segs, constrained, new_id, ends, marks)
         _put(out, "segments", ends)
         if not o.B:
             _put(out, "segment_markers", marks)

@@ -21,6 +21,7 @@ import numpy as np
 
 from . import counters, limits, refine
 from .carve import carve
+from .core.scaling import all_finite
 from .core.subsegments import Subsegments
 from .delaunay import delaunay
 from .errors import TriangleError
@@ -163,7 +164,7 @@ def validate(tri: dict, o: Options) -> dict:
     if xy.size == 0 or xy.reshape(-1, 2).shape[0] < 3:
         raise TriangleError("Input must have at least three vertices.")
     xy = _rows(tri, "vertices", 2, np.float64)
-    if not np.isfinite(xy).all():
+    if not all_finite(xy):
         bad = int(np.flatnonzero(~np.isfinite(xy).all(axis=1))[0])
         raise TriangleError(f"vertex {bad} has a coordinate that is not finite: {tuple(xy[bad])}")
     n = xy.shape[0]
@@ -208,7 +209,8 @@ def mesh_input(inp: dict, o: Options, work: np.ndarray, threads: int = 1, room: 
     )
     np.asarray(m.vmark)[: xy.shape[0]] = inp["vertex_markers"]
     ms = MeshState(mesh=m, segs=Subsegments(nseg + room), n_input=xy.shape[0], dup=dup, n_triangles_initial=m.nlive)
-    for i in np.flatnonzero(dup >= 0):
+    duplicates = np.flatnonzero(dup >= 0) if work[counters.C_DUPLICATE] else ()  # (counted as found: none, no search)
+    for i in duplicates:
         ms.warnings.append(f"Warning:  A duplicate vertex at ({xy[i, 0]:.12g}, {xy[i, 1]:.12g}) appeared and was ignored.")
     if o.p:
         rows = clean_segments(inp["segments"], xy, dup, ms.warnings)

@@ -31,11 +31,11 @@ def carve(ms: MeshState, o: Options, holes: np.ndarray | None, regions: np.ndarr
         found_regions = np.zeros((len(regions), 2), dtype=np.int64)
         locate_points(m, np.ascontiguousarray(regions[:, :2]), lo, hi, found_regions, start)
     queue = np.empty(slots, dtype=np.int64)  # (the kernels write each entry before reading it)
-    tflag = np.asarray(m.tflag)
     n = 0
     if not o.c:
         n = infect_hull(m, ms.segs, queue, start)
     if has_holes:
+        tflag = np.asarray(m.tflag)
         found = np.zeros((len(holes), 2), dtype=np.int64)
         locate_points(m, np.ascontiguousarray(holes), lo, hi, found, start)
         for t in found[found[:, 0] >= 0, 0]:

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import cython
 from cython.cimports.instrument.core.mesh import Index, Mesh, dest, in_output, org
+from cython.cimports.instrument.core.subsegments import Subsegments
 
 
 @cython.ccall
@@ -78,15 +79,17 @@ def triangle_corners(
 @cython.nogil
 @cython.exceptval(check=False)
 def subsegment_rows(
-    m: Mesh, edges: cython.longlong[::1], new_id: cython.int[::1], record_marker: cython.int[::1],
+    m: Mesh, segs: Subsegments, edges: cython.longlong[::1], new_id: cython.int[::1],
     ends: cython.int[:, ::1], marker: cython.int[:, ::1],
 ) -> cython.void:
     """``ends[i]``: (destination, origin) of subsegment edge ``edges[i]``
     renumbered by ``new_id`` (Triangle lists a subsegment made on edge
-    a -> b as b -> a), and ``marker[i]`` its record's marker."""
+    a -> b as b -> a), and ``marker[i]`` its record's marker in ``segs``
+    (the records themselves, not their marker table: a table taken from
+    Python is a new memoryview to make and take apart on every call)."""
     e: Index
     for i in range(edges.shape[0]):
         e = edges[i]
         ends[i, 0] = new_id[dest(m, e)]
         ends[i, 1] = new_id[org(m, e)]
-        marker[i, 0] = record_marker[m.seg[e]]
+        marker[i, 0] = segs.marker[m.seg[e]]

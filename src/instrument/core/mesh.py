@@ -59,13 +59,18 @@ if not cython.compiled:  # compiled, these are mesh.pxd's
     V_FREE = 2  # made by splitting a triangle
     V_DEAD = 3  # a free vertex deleted again (left out of the output)
 
-#: The tables a mesh has no rows of (see Mesh.__init__): one empty array per type.
-_NO_ROWS = {dtype: np.empty(0, dtype=dtype) for dtype in (np.int32, np.int64, np.float64)}
-
 #: Columns of Mesh.parent: a new vertex's attributes are
 #: a0 + s (a1 - a0) + t (a2 - a0) of vertices p0, p1, p2 (p0 < 0: zeros).
 PARENT_COLUMNS = 5
-_NO_PARENTS = np.empty((0, PARENT_COLUMNS))  # a mesh without attribute records (see _NO_ROWS)
+
+#: The tables a mesh has no rows of (see Mesh.__init__): one empty table
+#: per type, taken as a typed memoryview once, here.  A table set from an
+#: array is a new memoryview to make (some 4k instructions: the buffer,
+#: its format, the checks); set from one of these it is a reference.
+_NO_INTS = cython.declare(cython.int[::1], np.empty(0, dtype=np.int32))
+_NO_LONGS = cython.declare(cython.longlong[::1], np.empty(0, dtype=np.int64))
+_NO_DOUBLES = cython.declare(cython.double[::1], np.empty(0))
+_NO_PARENTS = cython.declare(cython.double[:, ::1], np.empty((0, PARENT_COLUMNS)))  # a mesh without attribute records
 
 
 def _widened(a, rows: int, fill):
@@ -106,20 +111,28 @@ class Mesh:
         cap = max(n, int(vertices if vertices is not None else n), 1)
         slots = max(int(triangles), 4)
         self.xy = _widened(xy, cap, 0.0)
-        self.parent = filled((cap, PARENT_COLUMNS), -1.0) if parents else _NO_PARENTS
+        # (if statements, not conditional expressions: an array and a typed
+        # memoryview would meet as a Python object, and be taken anew)
+        if parents:
+            self.parent = filled((cap, PARENT_COLUMNS), -1.0)
+        else:
+            self.parent = _NO_PARENTS
         # The 1-D tables of one kind (per vertex or per triangle) that always
         # grow together come from one block per type and starting value, each
         # table a slice of its block: a small run's mesh made fifteen arrays
         # and took each as a typed memoryview, which cost more than the
         # copying (slicing a typed memoryview costs next to nothing).  Growth
         # replaces every table of a block at once (grow_*), so no old block
-        # outlives it; tables without rows share one empty array per type
-        # (a slice of no rows would keep its block alive).  The blocks of
-        # zeros stay lazily mapped, as the tables were.
+        # outlives it; tables without rows share one empty table per type
+        # (_NO_INTS and the others: a slice of no rows would keep its block
+        # alive).  The blocks of zeros stay lazily mapped, as the tables were.
         links: cython.int[::1] = filled((9 if constraints else 6) * slots, -1, np.int32)
         self.corner = links[0 : 3 * slots]
         self.twin = links[3 * slots : 6 * slots]
-        self.seg = links[6 * slots : 9 * slots] if constraints else _NO_ROWS[np.int32]
+        if constraints:
+            self.seg = links[6 * slots : 9 * slots]
+        else:
+            self.seg = _NO_INTS
         counts: cython.int[::1] = np.zeros(2 * slots, dtype=np.int32)
         self.stamp = counts[0:slots]
         self.free = counts[slots : 2 * slots]
@@ -132,10 +145,16 @@ class Mesh:
             self.vtri = hints[0:cap]
             self.vslot = hints[cap : 2 * cap]
         else:
-            self.vtri = _NO_ROWS[np.int64]
-            self.vslot = _NO_ROWS[np.int64]
-        self.area_bound = filled(slots, -1.0) if area_bounds else _NO_ROWS[np.float64]
-        self.attribute = np.zeros(slots) if attributes else _NO_ROWS[np.float64]
+            self.vtri = _NO_LONGS
+            self.vslot = _NO_LONGS
+        if area_bounds:
+            self.area_bound = filled(slots, -1.0)
+        else:
+            self.area_bound = _NO_DOUBLES
+        if attributes:
+            self.attribute = np.zeros(slots)
+        else:
+            self.attribute = _NO_DOUBLES
         self.nvert = n
         self.nslot = 0
         self.nfree = 0

@@ -7,6 +7,7 @@ cpdef double unit_scale(double m) noexcept nogil
 cpdef double scaled_dot(double ux, double uy, double vx, double vy) noexcept nogil
 cpdef (double, double) crossing_terms(double ax, double ay, double bx, double by, double rx, double ry, double lx, double ly, double ox, double oy) noexcept nogil
 cpdef double half_extent(double[:, ::1] xy, Index n) noexcept nogil
+cpdef bint all_finite(double[:, ::1] xy) noexcept nogil
 
 
 cdef inline (double, double, double, double) scaled_pair(double ux, double uy, double vx, double vy, double limit) noexcept nogil:

@@ -20,7 +20,7 @@ import math
 
 import cython
 from cython.cimports.instrument.core.mesh import Index
-from cython.cimports.libc.math import fabs, frexp, ldexp
+from cython.cimports.libc.math import fabs, frexp, isfinite, ldexp
 
 @cython.ccall
 @cython.nogil
@@ -139,3 +139,18 @@ def half_extent(xy: cython.double[:, ::1], n: Index) -> cython.double:
         y0 = min(y0, xy[i, 1])
         y1 = max(y1, xy[i, 1])
     return max(x1 / 2 - x0 / 2, y1 / 2 - y0 / 2)
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def all_finite(xy: cython.double[:, ::1]) -> cython.bint:
+    """Every entry of ``xy`` is finite (no infinity, no NaN), as the
+    rescaling here and the predicates assume of the input's coordinates.
+    (One pass: numpy's isfinite and all cost some 11k instructions even on
+    three vertices.)"""
+    for i in range(xy.shape[0]):
+        for k in range(xy.shape[1]):
+            if not isfinite(xy[i, k]):
+                return False
+    return True

@@ -658,8 +658,11 @@ def triangulate_group(m: Mesh, hull_at, lo: int, hi: int, frame: int, alternate:
     ghosts around its hull, allocating from ``m.nslot`` on; returns its
     first and last points in frames 0 and 1.  Releases the GIL."""
     h: cython.int[::1] = hull_at
-    frames: cython.longlong[:, ::1] = np.zeros((130, 4), dtype=np.int64)
-    found: cython.longlong[:, ::1] = np.zeros((130, 4), dtype=np.int64)
+    # the two stacks, 130 rows each, share one array (taking an array as a
+    # typed memoryview costs more than a small run's whole recursion)
+    stacks: cython.longlong[:, ::1] = np.zeros((260, 4), dtype=np.int64)
+    frames: cython.longlong[:, ::1] = stacks[0:130]
+    found: cython.longlong[:, ::1] = stacks[130:260]
     a: Index = lo
     b: Index = hi
     f: Index = frame

@@ -312,9 +312,8 @@ def _smallest_area_bound(ms: MeshState, o: Options) -> float | None:
     """The smallest area bound of the run: -a's number, or the smallest
     regional / per-triangle bound of a bare -a."""
     bounds = [o.max_area] if o.max_area > 0 else []
-    table = np.asarray(ms.mesh.area_bound)
-    if o.var_area and table.shape[0]:
-        live = table[ms.mesh.live_triangles()]
+    if o.var_area and ms.mesh.area_bound.shape[0]:  # (the table as an array only when it is read)
+        live = np.asarray(ms.mesh.area_bound)[ms.mesh.live_triangles()]
         live = live[np.isfinite(live) & (live > 0)]
         if live.size:
             bounds.append(float(live.min()))
@@ -405,7 +404,7 @@ def finish(ms: MeshState, r: Refiner, user: Callable | None = None, guard: Calla
         if status == PRECISION:
             raise _precision_error(m, r.error_org, r.error_dest, r.error_apex)
         grow_refiner(ms, r)
-    ms.dead = np.flatnonzero(np.asarray(m.vtype)[: m.nvert] == V_DEAD)
+    ms.dead = (np.asarray(m.vtype)[: m.nvert] == V_DEAD).nonzero()[0]  # (flatnonzero, without its wrappers)
 
 
 def _precision_error(m, a: int, b: int, apex: int = -1) -> PrecisionError:

@@ -123,8 +123,10 @@ def merge_duplicates(rows: np.ndarray, markers: np.ndarray) -> tuple[np.ndarray,
     the line).
     """
     keys = np.empty(rows.shape[0], dtype=np.int64)
-    if pair_keys(np.ascontiguousarray(rows), keys) and all_different(np.sort(keys)):
-        return rows, markers  # the usual case, found without numpy's unique
+    if pair_keys(np.ascontiguousarray(rows), keys):
+        keys.sort()  # (in place: np.sort is the same through a Python wrapper and a copy)
+        if all_different(keys):
+            return rows, markers  # the usual case, found without numpy's unique
     lo, hi = np.minimum(rows[:, 0], rows[:, 1]), np.maximum(rows[:, 0], rows[:, 1])
     if hi.max() < 2**31:  # one integer per endpoint pair: a 1-D unique, several times faster than axis=0
         key = lo * (int(hi.max()) + 1) + hi
