@@ -60,7 +60,7 @@ from cython.cimports.instrument.refine.cavity import (
 from cython.cimports.instrument.refine.criteria import queue_rejected_fan, steiner_point, test_fan, test_triangle
 from cython.cimports.instrument.refine.deletion import chew_delete
 from cython.cimports.instrument.refine.encroach import check_subsegment, enc_edge, enc_free, enc_push, in_lens, may_split, queue_side
-from cython.cimports.instrument.refine.ghosts import insertion_records, note_born, rejected_bounds, rejected_fan_records, requeued, revive_ghosts
+from cython.cimports.instrument.refine.ghosts import insertion_records, note_born, records_known, rejected_bounds, rejected_fan_records, requeued, revive_ghosts
 from cython.cimports.instrument.refine.inplace import split_in_place
 from cython.cimports.instrument.refine.order import TRIANGLE
 from cython.cimports.instrument.refine.queues import ghost_room, ghost_slot, ghosts_made, queue_clear, queue_compact, queue_pop, queue_push, queue_used
@@ -988,6 +988,8 @@ def refine(r: Refiner, m: Mesh, segs: Subsegments) -> cython.int:
             if r.hkey.shape[0] < m.nslot + 16:
                 return NEED_ROOM
             queue_clear(r)
+            if r.cfg.strategy == TRIANGLE:
+                records_known(r, m)
             for tt in range(m.nslot):
                 if m.stamp[tt] > 0:
                     test_triangle(r, m, segs, tt)
