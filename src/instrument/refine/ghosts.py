@@ -309,15 +309,28 @@ def insertion_records(r: Refiner, m: Mesh, e: Index, on_edge: cython.bint, nb: I
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
-def revive_ghosts(r: Refiner, m: Mesh, ok: cython.bint, nb: Index) -> cython.void:
+def revive_ghosts(r: Refiner, m: Mesh, ok: cython.bint, nb: Index, two: cython.bint) -> cython.void:
     """The vertex about to be made takes the vertex record the ghosts wait
     for: revive those whose record and orientation its fan gives their
     triangle again (``r.fan_rec[:nb]``, if ``ok``: insertion_records), and
-    drop the others."""
+    drop the others.  Ghosts that wait for the vertex after this one (a
+    deletion came between, queues.ghosts_orphaned) go on waiting if this
+    split takes two new triangle records (``two``: the two the deletion
+    freed), and are dropped if not."""
     g: Index = r.nghost - 1
     live: cython.bint
     j: Index
-    while g >= 0 and ghost_pending(r, m, g):
+    # (the rows of the vertex made last, revived or dropped, may follow
+    # those that waited for the vertex after it)
+    while g >= 0 and (ghost_pending(r, m, g) or r.ghost[g, 2] == m.nvert - 1):
+        if not ghost_pending(r, m, g):
+            g -= 1
+            continue
+        if r.ghost[g, 2] != m.nvert:
+            if not two:
+                r.ghost[g, 0] = -1
+            g -= 1
+            continue
         live = False
         if ok:
             for j in range(nb):

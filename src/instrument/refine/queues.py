@@ -265,8 +265,9 @@ def ghosts_made(r: Refiner, m: Mesh, v: Index) -> cython.void:
     the ghosts it revived stand for (the last rows, waiting for ``v``)."""
     g: Index = r.nghost - 1
     e: Index
-    while g >= 0 and r.ghost[g, 2] == v:
-        if r.ghost[g, 0] >= 0 and r.ghost[g, 4] == GHOST_LIVE and r.ghost[g, 3] == -1:
+    # (the rows of the vertex before, which came after these: ghosts_orphaned)
+    while g >= 0 and (r.ghost[g, 2] == v or r.ghost[g, 2] == v - 1):
+        if r.ghost[g, 2] == v and r.ghost[g, 0] >= 0 and r.ghost[g, 4] == GHOST_LIVE and r.ghost[g, 3] == -1:
             e = find_edge(m, r.ghost[g, 0], r.ghost[g, 1])
             if e >= 0 and m.corner[e] == v:
                 r.ghost[g, 3] = m.stamp[e // 3]
@@ -299,13 +300,25 @@ def entry_to_ghost(r: Refiner, i: Index, g: Index) -> cython.void:
 @cython.nogil
 @cython.exceptval(check=False)
 def ghosts_orphaned(r: Refiner, m: Mesh) -> cython.void:
-    """Vertices were deleted before the ghosts' vertex was made: Triangle's
-    pool hands out their records first (last in, first out), so the vertex
-    made next is not the rejected one's record.  The waiting ghosts (the
-    last rows) are dropped (a later vertex may take that record; not modelled)."""
+    """A vertex is deleted before the ghosts' vertex was made: Triangle's
+    pools hand out its records first (last in, first out), so the vertex
+    made next (the subsegment's split point) takes the deleted vertex's
+    record, and the split's two triangle records are the two the deletion
+    freed; the vertex after takes the record the ghosts wait for, with the
+    triangle records as they were.  So the waiting ghosts (the last rows)
+    now wait for the vertex after the next (revive_ghosts keeps them only
+    if the next split takes two triangle records), as the 20-point star,
+    step 8, under pq30 shows (Triangle rejects (0.57953, 0.31312), deletes
+    (0.57445, 0.29750), splits a subsegment, and serves the rejected
+    point's entry of (0.59663, 0.34549) (0.57873, 0.34549) when its next
+    circumcenter, (0.58768, 0.32792), remakes it).  Ghosts already waiting
+    so (a second deletion) are dropped."""
     g: Index = r.nghost - 1
     while g >= 0 and ghost_pending(r, m, g):
-        r.ghost[g, 0] = -1
+        if r.ghost[g, 2] == m.nvert:
+            r.ghost[g, 2] = m.nvert + 1
+        else:
+            r.ghost[g, 0] = -1
         g -= 1
 
 

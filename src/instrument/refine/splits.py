@@ -557,7 +557,7 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
     records: cython.bint = False
     if r.cfg.strategy == TRIANGLE:
         records = insertion_records(r, m, e, True, nb)
-        revive_ghosts(r, m, records, nb)
+        revive_ghosts(r, m, records, nb, m.twin[e] != NO_EDGE)
     rec: Index = m.seg[e]
     half: Index = new_record(segs, segs.marker[rec], segs.source[rec], segs.ends[rec, 0], segs.ends[rec, 1])
     v: Index = new_vertex(m, px, py, V_SEGMENT, segs.marker[rec], e0, e1, e0, split, 0.0)
@@ -940,7 +940,7 @@ def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cyth
     records: cython.bint = False
     if r.cfg.strategy == TRIANGLE:
         records = insertion_records(r, m, e, status == LOC_ON_EDGE, nb)
-        revive_ghosts(r, m, records, nb)
+        revive_ghosts(r, m, records, nb, status != LOC_ON_EDGE or m.twin[e] != NO_EDGE)
     # attributes: barycentric in (org, dest, apex)
     v: Index = new_vertex(m, px, py, V_FREE, 0, b, c, a, xi, eta)
     fill_cavity(r, m, v, n, nb)
