@@ -49,7 +49,7 @@ from __future__ import annotations
 import cython
 from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, Index, Mesh, lnext, lprev
 from cython.cimports.instrument.refine.cavity import flip_bound
-from cython.cimports.instrument.refine.queues import entry_to_ghost, entry_waiting, ghost_pending, ghost_revive, ghosts_orphaned
+from cython.cimports.instrument.refine.queues import entry_to_ghost, entry_waiting, ghost_pending, ghost_recent, ghost_revive, ghosts_orphaned
 from cython.cimports.instrument.refine.state import Refiner
 
 #: The new records of a rejected 1 -> 3 split: the one on the split
@@ -313,21 +313,27 @@ def revive_ghosts(r: Refiner, m: Mesh, ok: cython.bint, nb: Index, two: cython.b
     """The vertex about to be made takes the vertex record the ghosts wait
     for: revive those whose record and orientation its fan gives their
     triangle again (``r.fan_rec[:nb]``, if ``ok``: insertion_records), and
-    drop the others.  Ghosts that wait for the vertex after this one (a
-    deletion came between, queues.ghosts_orphaned) go on waiting if this
-    split takes two new triangle records (``two``: the two the deletion
-    freed), and are dropped if not."""
+    drop the others.  Ghosts that wait for a later vertex (deletions came
+    between, queues.ghosts_orphaned) go on waiting if their record is
+    still theirs then: a new one if this split takes two new triangle
+    records (``two``: the two the last deletion freed), a kept one if the
+    split does not touch it."""
     g: Index = r.nghost - 1
     live: cython.bint
     j: Index
-    # (the rows of the vertex made last, revived or dropped, may follow
-    # those that waited for the vertex after it)
-    while g >= 0 and (ghost_pending(r, m, g) or r.ghost[g, 2] == m.nvert - 1):
+    k: Index
+    # (the rows of the vertices made last, revived or dropped, may follow
+    # those that wait for a later vertex)
+    while g >= 0 and ghost_recent(r, m, g):
         if not ghost_pending(r, m, g):
             g -= 1
             continue
         if r.ghost[g, 2] != m.nvert:
-            if not two:
+            # a new record's name holds if the pool is as it was (the split
+            # took the two the deletion freed), a kept one if the split
+            # leaves its triangle alone (outside the cavity, tflag 1)
+            k = _ghost_name(r, r.ghost[g, 3])
+            if (k < 0 and not two) or (k >= 0 and m.tflag[k] == 1):
                 r.ghost[g, 0] = -1
             g -= 1
             continue
@@ -427,16 +433,26 @@ def deletion_ghosts(r: Refiner, m: Mesh, v: Index, tris: cython.longlong[:], d: 
     vertex record) remakes (w[i], w[i+1], itself) in the same record and
     orientation.  The deletion frees two of the star's records
     (deletion_freed); those entries turn into ghosts, in their places, of
-    the star triangles whose records their own insertion made (their
-    orientations are Triangle's, note_born): ``v``'s, or a later vertex's
-    (``v`` then a corner of the entry's base edge).  The ghosts waiting for an
-    earlier vertex are dropped: the next vertex takes ``v``'s record (the
-    last freed), and only the first vertex made after is modelled."""
+    the star triangles whose orientation in their records is known
+    (note_born, note_deleted): queued by ``v``'s insertion, or by a later
+    vertex's (``v`` then a corner of the entry's base edge), or by an
+    earlier deletion's flips.  The ghosts waiting already wait for a later
+    vertex (queues.ghosts_orphaned: the next takes ``v``'s record, the
+    last freed)."""
     ghosts_orphaned(r, m)
     t: Index
     i: Index
-    g: Index
+    g: Index = r.nghost - 1
     c: Index
+    # the ghosts that now wait for a later vertex keep a kept record only if
+    # the deletion leaves it alone (not a triangle of the star)
+    while g >= 0 and ghost_recent(r, m, g):
+        if ghost_pending(r, m, g) and r.ghost[g, 3] >= 0:
+            for k in range(d):
+                if tris[k] == r.ghost[g, 3]:
+                    r.ghost[g, 0] = -1
+                    break
+        g -= 1
     for k in range(1, d):
         t = tris[k]
         i = r.born[t, 0]
@@ -474,9 +490,9 @@ def deletion_freed(r: Refiner, m: Mesh, j: Index, d: Index) -> cython.void:
     ghosts wait under those names; the others are dropped."""
     g: Index = r.nghost - 1
     k: Index
-    while g >= 0 and ghost_pending(r, m, g):
+    while g >= 0 and ghost_recent(r, m, g):
         k = STAR_PLACE - r.ghost[g, 3]
-        if r.ghost[g, 3] <= STAR_PLACE:
+        if ghost_pending(r, m, g) and r.ghost[g, 3] <= STAR_PLACE:
             if k == j - 1:
                 r.ghost[g, 3] = _ghost_name(r, FREED_LAST)
             elif k == d - 1:

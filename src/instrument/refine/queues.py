@@ -37,6 +37,12 @@ POPPED = cython.declare(cython.longlong, -2)
 #: A ghost row's orientation once its vertex's insertion has revived it.
 GHOST_LIVE = cython.declare(cython.longlong, 9)
 
+#: How many Chew deletions a ghost row may wait through (ghosts_orphaned):
+#: each puts its vertex one later.  The rows of the vertices made since
+#: are then the last ones, whose vertex is at most this many + 1 before
+#: the next (ghost_recent).
+GHOST_DEFER = cython.declare(cython.longlong, 2)
+
 
 @cython.ccall
 @cython.nogil
@@ -229,6 +235,18 @@ def ghost_pending(r: Refiner, m: Mesh, g: Index) -> cython.bint:
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
+def ghost_recent(r: Refiner, m: Mesh, g: Index) -> cython.bint:
+    """Is ghost row ``g`` among the last rows, those that may wait for a
+    vertex not made yet, or were made for one of the last vertices?  Rows
+    are added as their entries are queued, for the next vertex made, and
+    wait at most GHOST_DEFER vertices more: a walk back from the last row
+    while this holds meets every row still waiting."""
+    return r.ghost[g, 2] >= m.nvert - GHOST_DEFER - 1
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
 def ghost_slot(r: Refiner, m: Mesh, g: Index) -> Index:
     """The live triangle ghost row ``g`` matches now, or -1: the row was
     revived (its record holds the triangle again, ghosts.revive_ghosts) and
@@ -265,8 +283,8 @@ def ghosts_made(r: Refiner, m: Mesh, v: Index) -> cython.void:
     the ghosts it revived stand for (the last rows, waiting for ``v``)."""
     g: Index = r.nghost - 1
     e: Index
-    # (the rows of the vertex before, which came after these: ghosts_orphaned)
-    while g >= 0 and (r.ghost[g, 2] == v or r.ghost[g, 2] == v - 1):
+    # (rows of earlier vertices may come after these: ghosts_orphaned)
+    while g >= 0 and ghost_recent(r, m, g):
         if r.ghost[g, 2] == v and r.ghost[g, 0] >= 0 and r.ghost[g, 4] == GHOST_LIVE and r.ghost[g, 3] == -1:
             e = find_edge(m, r.ghost[g, 0], r.ghost[g, 1])
             if e >= 0 and m.corner[e] == v:
@@ -312,13 +330,17 @@ def ghosts_orphaned(r: Refiner, m: Mesh) -> cython.void:
     (0.57445, 0.29750), splits a subsegment, and serves the rejected
     point's entry of (0.59663, 0.34549) (0.57873, 0.34549) when its next
     circumcenter, (0.58768, 0.32792), remakes it).  Ghosts already waiting
-    so (a second deletion) are dropped."""
+    so GHOST_DEFER times are dropped (the 13-point star, step 5, under
+    pq30 serves a rejected point's entry two vertices after two deletions:
+    the split point takes the second deleted vertex's record, the next
+    circumcenter the first's, the one after the rejected point's)."""
     g: Index = r.nghost - 1
-    while g >= 0 and ghost_pending(r, m, g):
-        if r.ghost[g, 2] == m.nvert:
-            r.ghost[g, 2] = m.nvert + 1
-        else:
-            r.ghost[g, 0] = -1
+    while g >= 0 and ghost_recent(r, m, g):
+        if ghost_pending(r, m, g):
+            if r.ghost[g, 2] < m.nvert + GHOST_DEFER:
+                r.ghost[g, 2] += 1
+            else:
+                r.ghost[g, 0] = -1
         g -= 1
 
 
