@@ -31,17 +31,20 @@ and q32.5 point sets are refined split for split as Triangle does):
 
 Records are named by the slot of the triangle ours holds at the time (the
 mesh does not change between a rejection and the next vertex but for
-Chew's deletions, which drop the ghosts: queues.ghosts_orphaned), or by
-NEW_FIRST / NEW_SECOND for a split's new records; orientations are
-relative to ours' slot layout, the same at both times.
+Chew's deletions and their subsegment's split, which a ghost with such a
+name must not touch: queues.ghosts_orphaned, revive_ghosts), or by
+NEW_FIRST / NEW_SECOND for a split's new records.  Orientations are
+Triangle's own where the slot's is known (``r.orient``: records_known,
+note_born, deletion_orientations), else relative to ours' slot layout,
+the same at both times.
 
 Chew's deletions free vertex records too: the subsegment's split point
 takes the deleted vertex's, and an entry of the deleted vertex's star is
 served again if the split remakes its triangle in that entry's record and
-orientation (deletion_ghosts, deletion_freed).  Only entries whose records
-their insertion made are modelled there: a new record's orientation is
-Triangle's own (note_born), where a kept one's is only relative to ours'
-slot layout of a triangle the deletion has removed.
+orientation (deletion_ghosts, deletion_freed).  That needs the entry's
+orientation in Triangle's terms: known for entries queued by an insertion
+(in a new record, or a kept one whose orientation was known) or by a
+deletion's flips (note_born, note_deleted).
 """
 
 from __future__ import annotations
