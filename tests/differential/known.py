@@ -34,23 +34,31 @@ class Defect:
 DEFECTS = [
     Defect(
         "star-size",
-        "self-intersecting stars under q: ours can end above Triangle's re-expression spread. The first list of "
-        "bad triangles and the crossing vertices are Triangle's (tests/engine/test_pool_order.py); what parts the "
-        "refinements is which stale entries Triangle serves again after Chew's deletions. Its entries hold vertex "
-        "records: the subsegment's split point takes the last deleted vertex's record, and an entry of a triangle of "
-        "that vertex's star matches again if the split remakes it in the same triangle record and orientation. "
-        "refine/ghosts.py models the entries queued as the vertex's own insertion made the record (deletion_ghosts, "
-        "deletion_freed: the two records the deletion frees are the last star triangle on each side of the base's "
-        "apex); with it the 17-point star, step 8 (827 vertices against 760 before) makes Triangle's splits "
-        "throughout (regressions/star17-step8-pq30-deletion-revival-size.json, scripts/queue_trace.py), and every "
-        "star up to 21 points under pq30 makes Triangle's count on 63 of 81 (61 before). Left out: an entry queued "
-        "by an earlier deletion's flips (its orientation is not known): the 21-point star, step 10, parts at split "
-        "981 (348 before) where Triangle serves (0.5165, 0.4579) (0.5217, 0.4567) (0.5185, 0.4609) through the entry "
-        "of (0.5165, 0.4579) (0.5242, 0.4598) (0.5185, 0.4609) that a deletion queued before (0.5242, 0.4598) was "
-        "deleted in turn, or one whose record its vertex's insertion "
-        "kept (la.poly under pq33 parts so at split 140): 2038 vertices against 2001 "
-        "(regressions/star21-step10-pq30-deletion-record-size.json passes: within the harness's re-expression "
-        "bound; the worst star in the sweep, +1.8 %, 8.8 % before)",
+        "self-intersecting stars under q: ours can end above Triangle's re-expression spread where its refinement "
+        "parts from Triangle's. The first list of bad triangles and the crossing vertices are Triangle's "
+        "(tests/engine/test_pool_order.py); what parted the refinements was which stale entries Triangle serves "
+        "again after Chew's deletions, which refine/ghosts.py now models from Triangle's -VVV record lines: each "
+        "slot's orientation in its Triangle record is followed through insertions and deletions (records_known, "
+        "note_born), so an entry whose record its vertex's insertion kept (la.poly under pq33 parted so at split "
+        "140), or that a deletion's flips queued (deletion_orientations: the ear takes the earlier star triangle's "
+        "record; the 21-point star, step 10, parted so at split 981), becomes a ghost when its vertex is deleted "
+        "in turn; a rejected split on an edge gives its records back unswapped; and a rejected point's ghosts "
+        "wait through up to two deletions (queues.ghosts_orphaned: the split point takes the deleted vertex's "
+        "record, the vertex after the rejected point's). The 21-point star, step 10, now makes Triangle's 2001 "
+        "vertices split for split (2038 before; regressions/star21-step10-pq30-deletion-record-size.json), and "
+        "every star up to 21 points under pq30 makes Triangle's count on 79 of 81 (63 at f821465; none above the "
+        "size rule; python scripts/star_sweep.py). Left: the 12-point star, step 4, parts at split 55 on the "
+        "Miller-Pav-Walkington exemption (ours tests the two segments' shared end in either direction, Triangle "
+        "by its subsegments' orientation: the triangle (0.19587, 0.61309) (0.25, 0.61309) (0.22294, 0.62871), "
+        "30 degrees at the crossing, is exempt in ours and split by Triangle; 266 against 267), and the 18-point "
+        "star, step 8, at split 612, where Triangle serves (0.41318, 0.65038) (0.41318, 0.63472) (0.42674, "
+        "0.64255), an entry whose vertex records were reused more than once (918 against 1110, below). Under pq33 "
+        "79 of 81 is 77 of 81 (python scripts/star_sweep.py --switches pq33), and the 21-point star, step 10, "
+        "ends above Triangle: 3761 vertices against 3706 (3629 at f821465; Triangle's spread 3323..3706: above "
+        "the 1 % rule's 3743, within the harness's 3783); it follows Triangle's splits to split 1894, where "
+        "Triangle serves (0.53112, 0.46093) (0.53310, 0.45412) (0.53345, 0.45972) before (0.52704, 0.46091) "
+        "(0.53112, 0.46093) (0.52936, 0.46224), queued just before it in a higher bucket: served from an older "
+        "entry with another key (not found yet)",
         lambda c, f, n: f.kind == "size" and c.family == "star" and read_switches(c.switches).q,
     ),
 ]

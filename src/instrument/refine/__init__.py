@@ -248,6 +248,8 @@ def grow_refiner(ms: MeshState, r: Refiner) -> None:
         r.ghost = _widened(r.ghost, 2 * r.ghost.shape[0] + need, 0)
     if r.born.shape[0] < slots:  # kept between steps (ghosts.note_born)
         r.born = _widened(r.born, slots, 0)
+    if r.orient.shape[0] < slots:  # kept between steps (ghosts.records_known)
+        r.orient = _widened(r.orient, slots, 0)
     enc = r.enc.shape[0]
     if enc < r.enc_live + need:  # a pool: slots keep their places
         r.enc = _widened(r.enc, 2 * enc + need, 0)

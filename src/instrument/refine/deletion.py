@@ -26,7 +26,7 @@ from cython.cimports.instrument.core.subsegments import Subsegments
 from cython.cimports.instrument.counters import C_CREATED, C_DELETED, C_DELETED_VERTEX, C_INCIRCLE
 from cython.cimports.instrument.refine.cavity import inherit, inherited
 from cython.cimports.instrument.refine.criteria import test_triangle
-from cython.cimports.instrument.refine.ghosts import deletion_freed, deletion_ghosts
+from cython.cimports.instrument.refine.ghosts import deletion_freed, deletion_ghosts, deletion_orientations, note_deleted, star_orientations
 from cython.cimports.instrument.refine.order import TRIANGLE
 from cython.cimports.instrument.refine.queues import ghost_room, queue_used
 from cython.cimports.instrument.refine.star_delaunay import delaunay_star
@@ -179,6 +179,7 @@ def delete_free_vertex(r: Refiner, m: Mesh, segs: Subsegments, e0: Index) -> cyt
         return NEED_ROOM
     if r.cfg.strategy == TRIANGLE:  # Triangle's entries of the star wait for v's vertex record
         deletion_ghosts(r, m, v, tris, d)
+        star_orientations(r, m, v, tris, d)  # and its flips carry the records on
     # the polygon w0 .. w[d-1]; base w0 -> w1, chain w0, w[d-1], ..., w1
     half: Index = w.shape[0] // 2
     chain: cython.longlong[:] = w[half:]
@@ -254,6 +255,8 @@ def delete_free_vertex(r: Refiner, m: Mesh, segs: Subsegments, e0: Index) -> cyt
                 order[j] = u
                 j -= 1
             order[j] = t
+    if r.cfg.strategy == TRIANGLE:  # the orientations the flips give their triangles
+        deletion_orientations(r, m, order, made, slot, d)
     slot[chain[0]] = -1
     for i in range(1, d):
         slot[chain[i]] = -1
@@ -267,8 +270,11 @@ def delete_free_vertex(r: Refiner, m: Mesh, segs: Subsegments, e0: Index) -> cyt
     m.work[C_DELETED_VERTEX] += 1
     trace_row(r, T_DELETED, made, d, 0, r.hsize)
     if r.cfg.keep_segments == 0:
+        queued: Index = r.log_length
         for i in range(made):
             test_triangle(r, m, segs, r.fan[i])
+        if r.cfg.strategy == TRIANGLE:
+            note_deleted(r, m, queued)
     return DONE
 
 

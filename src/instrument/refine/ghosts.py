@@ -31,17 +31,20 @@ and q32.5 point sets are refined split for split as Triangle does):
 
 Records are named by the slot of the triangle ours holds at the time (the
 mesh does not change between a rejection and the next vertex but for
-Chew's deletions, which drop the ghosts: queues.ghosts_orphaned), or by
-NEW_FIRST / NEW_SECOND for a split's new records; orientations are
-relative to ours' slot layout, the same at both times.
+Chew's deletions and their subsegment's split, which a ghost with such a
+name must not touch: queues.ghosts_orphaned, revive_ghosts), or by
+NEW_FIRST / NEW_SECOND for a split's new records.  Orientations are
+Triangle's own where the slot's is known (``r.orient``: records_known,
+note_born, deletion_orientations), else relative to ours' slot layout,
+the same at both times.
 
 Chew's deletions free vertex records too: the subsegment's split point
 takes the deleted vertex's, and an entry of the deleted vertex's star is
 served again if the split remakes its triangle in that entry's record and
-orientation (deletion_ghosts, deletion_freed).  Only entries whose records
-their insertion made are modelled there: a new record's orientation is
-Triangle's own (note_born), where a kept one's is only relative to ours'
-slot layout of a triangle the deletion has removed.
+orientation (deletion_ghosts, deletion_freed).  That needs the entry's
+orientation in Triangle's terms: known for entries queued by an insertion
+(in a new record, or a kept one whose orientation was known) or by a
+deletion's flips (note_born, note_deleted).
 """
 
 from __future__ import annotations
@@ -49,7 +52,7 @@ from __future__ import annotations
 import cython
 from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, Index, Mesh, lnext, lprev
 from cython.cimports.instrument.refine.cavity import flip_bound
-from cython.cimports.instrument.refine.queues import entry_to_ghost, entry_waiting, ghost_pending, ghost_revive, ghosts_orphaned
+from cython.cimports.instrument.refine.queues import entry_to_ghost, entry_waiting, ghost_pending, ghost_recent, ghost_revive, ghosts_orphaned
 from cython.cimports.instrument.refine.state import Refiner
 
 #: The new records of a rejected 1 -> 3 split: the one on the split
@@ -88,6 +91,46 @@ def _ghost_name(r: Refiner, k: Index) -> Index:
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
+def _edge_orientation(r: Refiner, m: Mesh, e: Index) -> Index:
+    """The orientation of edge ``e``'s handle in its triangle's Triangle
+    record, or -1 if not known (records_known, note_born)."""
+    t: Index = e // 3
+    if not r.orient_ready or r.orient[t, 1] != m.stamp[t] or r.orient[t, 2] != m.corner[3 * t]:
+        return -1
+    return (e - 3 * t + r.orient[t, 0]) % 3
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _kept(r: Refiner, m: Mesh, row: Index, e: Index, h: Index, up: Index) -> cython.void:
+    """Lineage row ``row``: edge ``e`` in the record of handle ``h``'s
+    triangle (which keeps it), ``up`` orientations above ``h``'s.  Known
+    (Triangle's own orientation) where the slot's is (_edge_orientation);
+    else relative to ours' slot layout, which serves where both times of a
+    comparison see the same layout (a rejected point's ghosts)."""
+    o: Index = _edge_orientation(r, m, h)
+    r.lineage[row, 0] = e
+    r.lineage[row, 1] = h // 3
+    r.lineage[row, 2] = (h - 3 * (h // 3) + up) % 3 if o < 0 else (o + up) % 3
+    r.lineage[row, 3] = o >= 0
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _new(r: Refiner, row: Index, e: Index, rec: Index) -> cython.void:
+    """Lineage row ``row``: edge ``e`` in new record ``rec``, orientation 0
+    (Triangle's own)."""
+    r.lineage[row, 0] = e
+    r.lineage[row, 1] = rec
+    r.lineage[row, 2] = 0
+    r.lineage[row, 3] = 1
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
 def _lineage(r: Refiner, m: Mesh, top: Index, nb: Index) -> cython.bint:
     """Run the flips from the split's fan triangles on ``r.lineage[:top]``
     (edge, record, orientation; the first to flip on top) over the cavity
@@ -103,6 +146,7 @@ def _lineage(r: Refiner, m: Mesh, top: Index, nb: Index) -> cython.bint:
     k: Index
     tw: Index
     y: Index
+    known: Index
     while top > 0:
         top -= 1
         e = r.lineage[top, 0]
@@ -118,18 +162,19 @@ def _lineage(r: Refiner, m: Mesh, top: Index, nb: Index) -> cython.bint:
             r.flips[r.nflips, 0] = rec
             r.flips[r.nflips, 1] = y
             r.nflips += 1
-            r.lineage[top, 0] = lprev(tw)
-            r.lineage[top, 1] = y
-            r.lineage[top, 2] = (tw - 3 * y + 1) % 3
+            known = r.lineage[top, 3]
+            _kept(r, m, top, lprev(tw), tw, 1)
             r.lineage[top + 1, 0] = lnext(tw)
             r.lineage[top + 1, 1] = rec
             r.lineage[top + 1, 2] = (k + 2) % 3
+            r.lineage[top + 1, 3] = known
             top += 2
             continue
         if out >= nb or r.bnd[r.fan[out], 4] != e:
             return False
         r.fan_rec[out, 0] = rec
         r.fan_rec[out, 1] = k
+        r.fan_rec[out, 2] = r.lineage[top, 3]
         out += 1
     return out == nb
 
@@ -149,33 +194,19 @@ def _split_lineage(r: Refiner, m: Mesh, e: Index, on_edge: cython.bint, first: I
     if not on_edge:
         # e (org -> dest) keeps its record, dest -> apex gets the first new
         # one, apex -> org the second
-        r.lineage[0, 0] = lprev(e)
-        r.lineage[0, 1] = second
-        r.lineage[0, 2] = 0
-        r.lineage[1, 0] = lnext(e)
-        r.lineage[1, 1] = first
-        r.lineage[1, 2] = 0
-        r.lineage[2, 0] = e
-        r.lineage[2, 1] = t
-        r.lineage[2, 2] = e - 3 * t
+        _new(r, 0, lprev(e), second)
+        _new(r, 1, lnext(e), first)
+        _kept(r, m, 2, e, e, 0)
         return 3
     # on e (o -> d): d -> apex keeps e's record one orientation up, o ->
     # apex' takes the first new one, apex -> o the second (the first without
     # a twin), apex' -> d keeps the twin's two up
     if tw != NO_EDGE:
-        r.lineage[0, 0] = lprev(tw)
-        r.lineage[0, 1] = tw // 3
-        r.lineage[0, 2] = (tw - 3 * (tw // 3) + 2) % 3
-        r.lineage[1, 0] = lnext(tw)
-        r.lineage[1, 1] = first
-        r.lineage[1, 2] = 0
+        _kept(r, m, 0, lprev(tw), tw, 2)
+        _new(r, 1, lnext(tw), first)
         top = 2
-    r.lineage[top, 0] = lprev(e)
-    r.lineage[top, 1] = second if tw != NO_EDGE else first
-    r.lineage[top, 2] = 0
-    r.lineage[top + 1, 0] = lnext(e)
-    r.lineage[top + 1, 1] = t
-    r.lineage[top + 1, 2] = (e - 3 * t + 1) % 3
+    _new(r, top, lprev(e), second if tw != NO_EDGE else first)
+    _kept(r, m, top + 1, lnext(e), e, 1)
     return top + 2
 
 
@@ -184,9 +215,18 @@ def _split_lineage(r: Refiner, m: Mesh, e: Index, on_edge: cython.bint, first: I
 @cython.exceptval(check=False)
 def _rejected_split(r: Refiner, m: Mesh, e: Index, on_edge: cython.bint) -> Index:
     """``_split_lineage`` for a point about to be rejected, its new records
-    named as ``rejected_fan_records`` names them."""
+    named as ``rejected_fan_records`` names them: by the order the next
+    split takes them, FREED_LAST first.  The undo of a split inside a
+    triangle frees them so that the next split takes the second first; the
+    undo of a split on an edge (2 -> 4) so that it takes the first first,
+    as Triangle's -VVV "Creating ... triangle" lines show: the corpus's
+    A.poly under pq33 rejects 55 points on edges whose next vertex is on
+    an edge too, and each takes the records in the rejected split's order,
+    where after 150 rejected points inside a triangle the order is swapped."""
     if on_edge and m.twin[e] == NO_EDGE:
         return _split_lineage(r, m, e, True, FREED_LAST, FREED_LAST)
+    if on_edge:
+        return _split_lineage(r, m, e, True, FREED_LAST, NEW_FIRST + NEW_SECOND - FREED_LAST)
     return _split_lineage(r, m, e, on_edge, NEW_FIRST, NEW_SECOND)
 
 
@@ -201,13 +241,14 @@ def rejected_fan_records(r: Refiner, m: Mesh, e: Index, on_edge: cython.bint, nb
 
     The point is about to be rejected: the ghosts waiting already (an
     earlier rejected point's, for the same vertex record) see the split
-    take the two records that point's undo freed, and its own undo free
-    them again the other way round (the second one taken is handed out
-    first next: FREED_LAST), so their names swap: the rows' parity flips
-    (_ghost_name).  (Without a twin the split on the edge takes one
-    record, and gives it back: nothing swaps.)  The names in
-    ``r.fan_rec`` are the ones the point's ghost rows store."""
-    if not on_edge or m.twin[e] != NO_EDGE:
+    take the two records that point's undo freed.  A split inside a
+    triangle has its undo free them again the other way round (the second
+    one taken is handed out first next: FREED_LAST), so their names swap:
+    the rows' parity flips (_ghost_name).  A split on an edge gives them
+    back in the order it took them (_rejected_split), and without a twin
+    it takes one record: nothing swaps.  The names in ``r.fan_rec`` are
+    the ones the point's ghost rows store."""
+    if not on_edge:
         r.ghost_swapped = not r.ghost_swapped
     if not _lineage(r, m, _rejected_split(r, m, e, on_edge), nb):
         return False
@@ -271,15 +312,34 @@ def insertion_records(r: Refiner, m: Mesh, e: Index, on_edge: cython.bint, nb: I
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
-def revive_ghosts(r: Refiner, m: Mesh, ok: cython.bint, nb: Index) -> cython.void:
+def revive_ghosts(r: Refiner, m: Mesh, ok: cython.bint, nb: Index, two: cython.bint) -> cython.void:
     """The vertex about to be made takes the vertex record the ghosts wait
     for: revive those whose record and orientation its fan gives their
     triangle again (``r.fan_rec[:nb]``, if ``ok``: insertion_records), and
-    drop the others."""
+    drop the others.  Ghosts that wait for a later vertex (deletions came
+    between, queues.ghosts_orphaned) go on waiting if their record is
+    still theirs then: a new one if this split takes two new triangle
+    records (``two``: the two the last deletion freed), a kept one if the
+    split does not touch it."""
     g: Index = r.nghost - 1
     live: cython.bint
     j: Index
-    while g >= 0 and ghost_pending(r, m, g):
+    k: Index
+    # (the rows of the vertices made last, revived or dropped, may follow
+    # those that wait for a later vertex)
+    while g >= 0 and ghost_recent(r, m, g):
+        if not ghost_pending(r, m, g):
+            g -= 1
+            continue
+        if r.ghost[g, 2] != m.nvert:
+            # a new record's name holds if the pool is as it was (the split
+            # took the two the deletion freed), a kept one if the split
+            # leaves its triangle alone (outside the cavity, tflag 1)
+            k = _ghost_name(r, r.ghost[g, 3])
+            if (k < 0 and not two) or (k >= 0 and m.tflag[k] == 1):
+                r.ghost[g, 0] = -1
+            g -= 1
+            continue
         live = False
         if ok:
             for j in range(nb):
@@ -297,11 +357,19 @@ def revive_ghosts(r: Refiner, m: Mesh, ok: cython.bint, nb: Index) -> cython.voi
 def note_born(r: Refiner, m: Mesh, ok: cython.bint, nb: Index, first: Index) -> cython.void:
     """The fan ``r.fan[:nb]`` is made and tested; the bucket log's entries
     from ``first`` on are the ones its test queued: remember, per slot,
-    each one's entry and, where the insertion made the triangle's record
-    (``r.fan_rec``, if ``ok``), the entry's orientation in it, which a
-    deletion of the vertex may need (deletion_ghosts)."""
+    each one's entry and, where Triangle's orientation of the triangle in
+    its record is known (``r.fan_rec``, if ``ok``: a record the insertion
+    made, or one it kept whose orientation was known), the entry's
+    orientation in it, which a deletion of the vertex may need
+    (deletion_ghosts).  And each fan slot's orientation for the insertions
+    to come (records_known): the fan triangle's rim edge is its edge 0."""
     t: Index
     j: Index
+    for j in range(nb):
+        t = r.fan[j]
+        r.orient[t, 0] = r.fan_rec[j, 1] if ok else 0
+        r.orient[t, 1] = m.stamp[t] if ok and r.fan_rec[j, 2] else 0
+        r.orient[t, 2] = m.corner[3 * t]
     for i in range(first, r.log_length):
         t = r.htri[i]
         if t < 0:
@@ -312,9 +380,31 @@ def note_born(r: Refiner, m: Mesh, ok: cython.bint, nb: Index, first: Index) -> 
         if ok:
             for j in range(nb):
                 if r.fan[j] == t:
-                    if r.fan_rec[j, 0] < 0:
+                    if r.fan_rec[j, 2]:
                         r.born[t, 1] = r.fan_rec[j, 1]
                     break
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def records_known(r: Refiner, m: Mesh) -> cython.void:
+    """The first list of bad triangles is about to be made: from here on
+    each slot's Triangle orientation is followed (``r.orient``: the
+    handle on its edge 0).  Triangle makes that list walking its records,
+    each in orientation 0, and ours' slots hold Triangle's records with
+    edge 0 as that handle: the first list's entries are Triangle's
+    triangle for triangle and corner for corner (la.poly under pq33: 317
+    of 317, scripts/queue_trace.py; tests/engine/test_pool_order.py).
+    Insertions then carry the orientations on (note_born: a record's
+    orientation moves with the split and its flips), where other steps
+    (Chew's deletions, splits made otherwise) leave their slots unknown:
+    their stamps change."""
+    for t in range(r.orient.shape[0]):
+        r.orient[t, 0] = 0
+        r.orient[t, 1] = m.stamp[t] if t < m.nslot and m.stamp[t] > 0 else 0
+        r.orient[t, 2] = m.corner[3 * t] if t < m.nslot else -1
+    r.orient_ready = True
 
 
 @cython.ccall
@@ -346,16 +436,26 @@ def deletion_ghosts(r: Refiner, m: Mesh, v: Index, tris: cython.longlong[:], d: 
     vertex record) remakes (w[i], w[i+1], itself) in the same record and
     orientation.  The deletion frees two of the star's records
     (deletion_freed); those entries turn into ghosts, in their places, of
-    the star triangles whose records their own insertion made (their
-    orientations are Triangle's, note_born): ``v``'s, or a later vertex's
-    (``v`` then a corner of the entry's base edge).  The ghosts waiting for an
-    earlier vertex are dropped: the next vertex takes ``v``'s record (the
-    last freed), and only the first vertex made after is modelled."""
+    the star triangles whose orientation in their records is known
+    (note_born, note_deleted): queued by ``v``'s insertion, or by a later
+    vertex's (``v`` then a corner of the entry's base edge), or by an
+    earlier deletion's flips.  The ghosts waiting already wait for a later
+    vertex (queues.ghosts_orphaned: the next takes ``v``'s record, the
+    last freed)."""
     ghosts_orphaned(r, m)
     t: Index
     i: Index
-    g: Index
+    g: Index = r.nghost - 1
     c: Index
+    # the ghosts that now wait for a later vertex keep a kept record only if
+    # the deletion leaves it alone (not a triangle of the star)
+    while g >= 0 and ghost_recent(r, m, g):
+        if ghost_pending(r, m, g) and r.ghost[g, 3] >= 0:
+            for k in range(d):
+                if tris[k] == r.ghost[g, 3]:
+                    r.ghost[g, 0] = -1
+                    break
+        g -= 1
     for k in range(1, d):
         t = tris[k]
         i = r.born[t, 0]
@@ -393,9 +493,9 @@ def deletion_freed(r: Refiner, m: Mesh, j: Index, d: Index) -> cython.void:
     ghosts wait under those names; the others are dropped."""
     g: Index = r.nghost - 1
     k: Index
-    while g >= 0 and ghost_pending(r, m, g):
+    while g >= 0 and ghost_recent(r, m, g):
         k = STAR_PLACE - r.ghost[g, 3]
-        if r.ghost[g, 3] <= STAR_PLACE:
+        if ghost_pending(r, m, g) and r.ghost[g, 3] <= STAR_PLACE:
             if k == j - 1:
                 r.ghost[g, 3] = _ghost_name(r, FREED_LAST)
             elif k == d - 1:
@@ -403,3 +503,99 @@ def deletion_freed(r: Refiner, m: Mesh, j: Index, d: Index) -> cython.void:
             else:
                 r.ghost[g, 0] = -1
         g -= 1
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _place(p: Index, d: Index) -> Index:
+    """A star place as deletion.py's vertex map gives it (w0 as d) -> 0 .. d-1."""
+    return 0 if p == d else p
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def star_orientations(r: Refiner, m: Mesh, v: Index, tris: cython.longlong[:], d: Index) -> cython.void:
+    """Chew's rule is about to delete ``v``, whose star is ``tris[:d]``
+    (``tris[i]`` = (v, w[i], w[i+1]), counter-clockwise): per place i, in
+    ``r.lineage[i]``, the orientation of the handle v -> w[i] in the
+    record of the star triangle (v, w[i], w[i+1]), whether it is known
+    (_edge_orientation), and the places before and after i around v, for
+    deletion_orientations."""
+    t: Index
+    c: Index
+    o: Index
+    for i in range(d):
+        t = tris[i]
+        c = 0
+        while c < 2 and m.corner[3 * t + c] != v:
+            c += 1
+        # the edge out of v (org v: corner (k + 1) % 3) is edge (c + 2) % 3
+        o = _edge_orientation(r, m, 3 * t + (c + 2) % 3) if m.corner[3 * t + c] == v else -1
+        r.lineage[i, 0] = o if o >= 0 else 0
+        r.lineage[i, 1] = o >= 0
+        r.lineage[i, 2] = (i + d - 1) % d
+        r.lineage[i, 3] = (i + 1) % d
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def deletion_orientations(r: Refiner, m: Mesh, order: cython.longlong[:], made: Index, slot: cython.longlong[:],
+                          d: Index) -> cython.void:
+    """The deletion's polygon is triangulated: ``order[:made - 1]`` its
+    triangles but the base one, (apex z, base org, base dest), in the
+    order Triangle's flips make them (deletion.py), ``slot`` each star
+    vertex's place (w0 as d).  Each flip removes z from v's star: the
+    triangles (v, p, z) and (v, z, n) around it, p and n its neighbours
+    there, become the ear (p, z, n) and (v, p, n).  As Triangle's -VVV
+    "Edge flip results in left triangle ... and right triangle ..." lines
+    show (the 21-point star's deletions, step 10), the ear takes the
+    record of (v, p, z), with its handle n -> p in the orientation that
+    record's handle z -> v had, and (v, p, n) takes the record of
+    (v, z, n), its handle v -> p two above that record's v -> z.  So each
+    ear's orientation is known where the star's were (star_orientations),
+    for the entry the deletion queues it with (note_deleted) and the
+    insertions to come (records_known); a triangulation that does not
+    follow (a check that should not fail) leaves the rest unknown."""
+    t: Index
+    z: Index
+    p: Index
+    n: Index
+    for i in range(made - 1):
+        t = order[i]
+        z = _place(slot[m.corner[3 * t]], d)
+        p = r.lineage[z, 2]
+        n = r.lineage[z, 3]
+        if _place(slot[m.corner[3 * t + 1]], d) != n or _place(slot[m.corner[3 * t + 2]], d) != p:
+            for j in range(i, made - 1):
+                r.orient[order[j], 1] = 0
+            return
+        # ours' edge 0 of (z, n, p) is n -> p, the ear's handle
+        r.orient[t, 0] = (r.lineage[p, 0] + 2) % 3
+        r.orient[t, 1] = m.stamp[t] if r.lineage[p, 1] else 0
+        r.orient[t, 2] = m.corner[3 * t]
+        r.lineage[p, 0] = (r.lineage[z, 0] + 2) % 3
+        r.lineage[p, 1] = r.lineage[z, 1]
+        r.lineage[p, 3] = n
+        r.lineage[n, 2] = p
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def note_deleted(r: Refiner, m: Mesh, first: Index) -> cython.void:
+    """A deletion's triangles are tested; the bucket log's entries from
+    ``first`` on are the ones the test queued: remember, per slot, each
+    one's entry and its orientation in its record where known
+    (deletion_orientations), for a deletion of one of its vertices in turn
+    (deletion_ghosts)."""
+    t: Index
+    for i in range(first, r.log_length):
+        t = r.htri[i]
+        if t < 0:
+            continue
+        r.born[t, 0] = i
+        r.born[t, 1] = _edge_orientation(r, m, 3 * t)
+        r.born[t, 2] = m.stamp[t]

@@ -10,6 +10,7 @@ cpdef void queue_compact(Refiner r, Mesh m) noexcept nogil
 cpdef void queue_push_ghost(Refiner r, double key, Index org, Index dest, Index v, Index rec, Index k) noexcept nogil
 cpdef bint ghost_room(Refiner r, Index n) noexcept nogil
 cpdef bint ghost_pending(Refiner r, Mesh m, Index g) noexcept nogil
+cpdef bint ghost_recent(Refiner r, Mesh m, Index g) noexcept nogil
 cpdef Index ghost_slot(Refiner r, Mesh m, Index g) noexcept nogil
 cpdef void ghost_revive(Refiner r, Index g, bint live) noexcept nogil
 cpdef void ghosts_orphaned(Refiner r, Mesh m) noexcept nogil

@@ -37,6 +37,12 @@ POPPED = cython.declare(cython.longlong, -2)
 #: A ghost row's orientation once its vertex's insertion has revived it.
 GHOST_LIVE = cython.declare(cython.longlong, 9)
 
+#: How many Chew deletions a ghost row may wait through (ghosts_orphaned):
+#: each puts its vertex one later.  The rows of the vertices made since
+#: are then the last ones, whose vertex is at most this many + 1 before
+#: the next (ghost_recent).
+GHOST_DEFER = cython.declare(cython.longlong, 2)
+
 
 @cython.ccall
 @cython.nogil
@@ -229,6 +235,18 @@ def ghost_pending(r: Refiner, m: Mesh, g: Index) -> cython.bint:
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
+def ghost_recent(r: Refiner, m: Mesh, g: Index) -> cython.bint:
+    """Is ghost row ``g`` among the last rows, those that may wait for a
+    vertex not made yet, or were made for one of the last vertices?  Rows
+    are added as their entries are queued, for the next vertex made, and
+    wait at most GHOST_DEFER vertices more: a walk back from the last row
+    while this holds meets every row still waiting."""
+    return r.ghost[g, 2] >= m.nvert - GHOST_DEFER - 1
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
 def ghost_slot(r: Refiner, m: Mesh, g: Index) -> Index:
     """The live triangle ghost row ``g`` matches now, or -1: the row was
     revived (its record holds the triangle again, ghosts.revive_ghosts) and
@@ -265,8 +283,9 @@ def ghosts_made(r: Refiner, m: Mesh, v: Index) -> cython.void:
     the ghosts it revived stand for (the last rows, waiting for ``v``)."""
     g: Index = r.nghost - 1
     e: Index
-    while g >= 0 and r.ghost[g, 2] == v:
-        if r.ghost[g, 0] >= 0 and r.ghost[g, 4] == GHOST_LIVE and r.ghost[g, 3] == -1:
+    # (rows of earlier vertices may come after these: ghosts_orphaned)
+    while g >= 0 and ghost_recent(r, m, g):
+        if r.ghost[g, 2] == v and r.ghost[g, 0] >= 0 and r.ghost[g, 4] == GHOST_LIVE and r.ghost[g, 3] == -1:
             e = find_edge(m, r.ghost[g, 0], r.ghost[g, 1])
             if e >= 0 and m.corner[e] == v:
                 r.ghost[g, 3] = m.stamp[e // 3]
@@ -299,13 +318,29 @@ def entry_to_ghost(r: Refiner, i: Index, g: Index) -> cython.void:
 @cython.nogil
 @cython.exceptval(check=False)
 def ghosts_orphaned(r: Refiner, m: Mesh) -> cython.void:
-    """Vertices were deleted before the ghosts' vertex was made: Triangle's
-    pool hands out their records first (last in, first out), so the vertex
-    made next is not the rejected one's record.  The waiting ghosts (the
-    last rows) are dropped (a later vertex may take that record; not modelled)."""
+    """A vertex is deleted before the ghosts' vertex was made: Triangle's
+    pools hand out its records first (last in, first out), so the vertex
+    made next (the subsegment's split point) takes the deleted vertex's
+    record, and the split's two triangle records are the two the deletion
+    freed; the vertex after takes the record the ghosts wait for, with the
+    triangle records as they were.  So the waiting ghosts (the last rows)
+    now wait for the vertex after the next (revive_ghosts keeps them only
+    if the next split takes two triangle records), as the 20-point star,
+    step 8, under pq30 shows (Triangle rejects (0.57953, 0.31312), deletes
+    (0.57445, 0.29750), splits a subsegment, and serves the rejected
+    point's entry of (0.59663, 0.34549) (0.57873, 0.34549) when its next
+    circumcenter, (0.58768, 0.32792), remakes it).  Ghosts already waiting
+    so GHOST_DEFER times are dropped (the 13-point star, step 5, under
+    pq30 serves a rejected point's entry two vertices after two deletions:
+    the split point takes the second deleted vertex's record, the next
+    circumcenter the first's, the one after the rejected point's)."""
     g: Index = r.nghost - 1
-    while g >= 0 and ghost_pending(r, m, g):
-        r.ghost[g, 0] = -1
+    while g >= 0 and ghost_recent(r, m, g):
+        if ghost_pending(r, m, g):
+            if r.ghost[g, 2] < m.nvert + GHOST_DEFER:
+                r.ghost[g, 2] += 1
+            else:
+                r.ghost[g, 0] = -1
         g -= 1
 
 

@@ -62,7 +62,7 @@ from cython.cimports.instrument.refine.cavity import (
 from cython.cimports.instrument.refine.criteria import queue_rejected_fan, steiner_point, test_fan, test_triangle
 from cython.cimports.instrument.refine.deletion import chew_delete
 from cython.cimports.instrument.refine.encroach import check_subsegment, enc_edge, enc_free, enc_push, in_lens, may_split, queue_side
-from cython.cimports.instrument.refine.ghosts import insertion_records, note_born, rejected_bounds, rejected_fan_records, requeued, revive_ghosts
+from cython.cimports.instrument.refine.ghosts import insertion_records, note_born, records_known, rejected_bounds, rejected_fan_records, requeued, revive_ghosts
 from cython.cimports.instrument.refine.inplace import split_in_place
 from cython.cimports.instrument.refine.order import TRIANGLE
 from cython.cimports.instrument.refine.queues import ghost_room, ghost_slot, ghosts_made, queue_clear, queue_compact, queue_pop, queue_push, queue_used
@@ -564,7 +564,7 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
     records: cython.bint = False
     if r.cfg.strategy == TRIANGLE:
         records = insertion_records(r, m, e, True, nb)
-        revive_ghosts(r, m, records, nb)
+        revive_ghosts(r, m, records, nb, m.twin[e] != NO_EDGE)
     rec: Index = m.seg[e]
     half: Index = new_record(segs, segs.marker[rec], segs.source[rec], segs.ends[rec, 0], segs.ends[rec, 1])
     v: Index = new_vertex(m, px, py, V_SEGMENT, segs.marker[rec], e0, e1, e0, split, 0.0)
@@ -958,7 +958,7 @@ def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cyth
     records: cython.bint = False
     if r.cfg.strategy == TRIANGLE:
         records = insertion_records(r, m, e, status == LOC_ON_EDGE, nb)
-        revive_ghosts(r, m, records, nb)
+        revive_ghosts(r, m, records, nb, status != LOC_ON_EDGE or m.twin[e] != NO_EDGE)
     # attributes: barycentric in (org, dest, apex)
     v: Index = new_vertex(m, px, py, V_FREE, 0, b, c, a, xi, eta)
     fill_cavity(r, m, v, n, nb)
@@ -1006,6 +1006,8 @@ def refine(r: Refiner, m: Mesh, segs: Subsegments) -> cython.int:
             if r.hkey.shape[0] < m.nslot + 16:
                 return NEED_ROOM
             queue_clear(r)
+            if r.cfg.strategy == TRIANGLE:
+                records_known(r, m)
             for tt in range(m.nslot):
                 if m.stamp[tt] > 0:
                     test_triangle(r, m, segs, tt)

@@ -71,13 +71,18 @@ cdef class Refiner:
     cdef public long long[:, ::1] bnd  # cavity rim edges: (outer twin, org, dest, record, edge)
     cdef public double[:, ::1] bval  # and the area bound and attribute each passes on
     cdef public double[::1] carry    # the area bound each cavity triangle passes on (cavity.py)
-    cdef public long long[:, ::1] lineage  # ghosts.py: the flips' stack (edge, record, orientation)
-    cdef public long long[:, ::1] fan_rec  # ghosts.py: each fan triangle's record and orientation
+    cdef public long long[:, ::1] lineage  # ghosts.py: the flips' stack (edge, record, orientation, known)
+    cdef public long long[:, ::1] fan_rec  # ghosts.py: each fan triangle's record, orientation, known
     cdef public long long[:, ::1] flips    # ghosts.py: the two records of each flip, in Triangle's order
     cdef public Index nflips         # rows in use
     # ghosts.py: per slot, the entry its insertion queued it with (log index), that entry's
     # orientation in its record if the insertion made the record (else -1), and the slot's stamp then
     cdef public long long[:, ::1] born
+    # ghosts.py: per slot, the orientation in its Triangle record of the handle on its edge 0,
+    # with the slot's stamp and corner 0 then (read only where both still hold), and whether
+    # the table holds anything yet (the first list of bad triangles sets it: ghosts.records_known)
+    cdef public long long[:, ::1] orient
+    cdef public bint orient_ready
     # the trace (empty: off)
     cdef public long long[:, ::1] trace  # rows: kind, created, deleted, walk steps, queue length
     cdef public Index ntrace

@@ -86,11 +86,12 @@ class Refiner:
         self.bnd = np.empty((slots, 5), dtype=np.int64)
         self.bval = np.empty((slots, 2))
         self.carry = np.empty(slots)
-        self.lineage = np.empty((slots, 3), dtype=np.int64)
-        self.fan_rec = np.empty((slots, 2), dtype=np.int64)
+        self.lineage = np.empty((slots, 4), dtype=np.int64)
+        self.fan_rec = np.empty((slots, 3), dtype=np.int64)
         self.flips = np.empty((slots, 2), dtype=np.int64)
         # kept between steps, read only where its checks hold (ghosts.note_born)
         self.born = np.zeros((slots, 3), dtype=np.int64)
+        self.orient = np.zeros((slots, 3), dtype=np.int64)  # (ghosts.records_known)
         self.trace = np.zeros((1024 if trace else 0, 5), dtype=np.int64)
         self.restart(cfg, budget)
 
@@ -119,6 +120,7 @@ class Refiner:
         self.compact_at = 0
         self.nghost = 0
         self.ghost_swapped = False
+        self.orient_ready = False
         self.nflips = 0
         self.enc_live = 0
         self.enc_fresh = 0
