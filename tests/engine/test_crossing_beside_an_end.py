@@ -18,6 +18,7 @@ from __future__ import annotations
 import pickle
 import subprocess
 import sys
+from fractions import Fraction
 
 import numpy as np
 
@@ -63,3 +64,53 @@ def test_crossings_beside_an_end_are_triangles():
         extra = t_vertices[8:]
         kinds.add("none" if not len(extra) else "copy" if (extra == inp["vertices"][0]).all(axis=1).any() else "beside")
     assert kinds == {"none", "beside", "copy"}  # every outcome of the rule is met
+
+
+# Campaign seed 3031, shrunk (regressions/crossing-beside-an-end-fold.json):
+# segment S crosses the crossing-split segment D = E..C one ulp beside its
+# input end E, where Triangle's point P (E's x less one ulp) rounds across
+# D's line past vertex V, which lies within rounding of that line; in a box
+# so that triangles stay.
+_POCKET = [
+    ("0x1.b7cdfd9d7bdbbp-34", "0x1.b7cdfd9d7bdbbp-34"),  # V
+    ("0x1.49cb07f8325b7p-33", "0x1.ccf32718618f8p-34"),  # E
+    ("0x1.b80bd69526012p-35", "0x1.a2a8d4229627ep-34"),  # D's other end
+    ("0x1.920249d1f336dp-44", "0x1.aaab237f9802fp-34"),  # the segment that crosses D first, at C
+    ("0x1.8df1b9a3f7acdp-34", "0x1.aaab237f9802fp-34"),
+    ("0x1.b77d4c8a5bdeep-33", "0x1.546c1b8fb1162p-33"),  # S
+    ("0x1.b83186cc11affp-34", "0x1.e21c2e22c1e5bp-35"),
+]
+
+
+def test_crossing_beside_an_end_past_a_pocket_vertex():
+    """Triangle's flips for S leave a pocket (an inverted triangle at V)
+    that waits for a vertex on S; the vertex that comes, P, splits C..E but
+    lies on V's side of it, and V ends on the far side of C..P: Triangle's
+    mesh is folded (its triangle (C, P, V) is clockwise).  Ours takes E for
+    the crossing, decided before the flips (recover._beside_splits): S goes
+    through E, and the mesh is valid."""
+    s = 2.0**-30
+    vertices = np.vstack([[[float.fromhex(x), float.fromhex(y)] for x, y in _POCKET],
+                          [[-s, -s], [s, -s], [s, s], [-s, s]]])
+    inp = {"vertices": vertices,
+           "segments": np.array([[1, 2], [3, 4], [5, 6], [7, 8], [8, 9], [9, 10], [10, 7]], dtype=np.int32)}
+    ours = instrument.triangulate(inp, "pQ")
+    assert check_mesh(ours, pslg=inp) == []
+    assert len(ours["vertices"]) == 12  # the input and C: S goes through E
+    done = subprocess.run([sys.executable, "-c", _TRIANGLE_MESH], input=pickle.dumps(inp), capture_output=True,
+                          timeout=60, check=True)
+    t_vertices, t_triangles = pickle.loads(done.stdout)
+    assert len(t_vertices) == 13  # C and P
+    w = [[Fraction(c) for c in p] for p in t_vertices]
+
+    def orient(a, b, c):
+        return (w[b][0] - w[a][0]) * (w[c][1] - w[a][1]) - (w[b][1] - w[a][1]) * (w[c][0] - w[a][0])
+
+    assert sum(orient(*t) <= 0 for t in t_triangles.tolist()) == 1  # Triangle's fold
+
+
+_TRIANGLE_MESH = r"""
+import pickle, sys, triangle
+out = triangle.triangulate(pickle.load(sys.stdin.buffer), "pQ")
+sys.stdout.buffer.write(pickle.dumps((out["vertices"], out["triangles"])))
+"""

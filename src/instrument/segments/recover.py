@@ -445,6 +445,7 @@ def _recover(
     fuzzy: cython.bint = False  # a vertex taken to be on the piece within rounding only
     crosses: cython.bint
     copied: cython.bint = False  # end is Triangle's crossing with a subsegment, made a copy of end
+    taken: cython.bint = False  # end is an input end of a subsegment the piece crosses beside it
     ct: cython.double
     csx: cython.double
     csy: cython.double
@@ -462,6 +463,15 @@ def _recover(
                 fuzzy = True
                 _place_crossing(m, segs, m.seg[c], m.nvert, csx, csy, m.corner[lnext(c)], m.corner[lprev(c)], ct)
                 copied = True
+            elif y >= 0 and not _beside_splits(m, a, c, y, csx, csy):
+                # a crossing beside that end where Triangle's point would not
+                # split c cleanly: _split_at_crossing takes the end itself,
+                # and the piece goes to it the same way (after Triangle's
+                # flips their pocket would wait for a vertex on the piece,
+                # and none comes: regressions/crossing-beside-an-end-fold.json)
+                end = y
+                fuzzy = True
+                taken = True
             break
         tw = m.twin[c]
         if tw == NO_EDGE:
@@ -494,7 +504,7 @@ def _recover(
             return _PIECE_CROSSES, a, e
         mark_subsegment(m, segs, e, marker, source, False)  # e: end -> a, as Triangle's
         return (_PIECE_DONE if end == b else _PIECE_CONTINUES), end, -1
-    if copied:  # the edges a -> b crossed that a -> end crosses too (not those at end)
+    if copied or taken:  # the edges a -> b crossed that a -> end crosses too (not those at end)
         nq = _crossing_only(m, a, end, qr, ql, nq)
     if not _flip_out(m, a, end, qr, ql, nq, n, stack):
         return _PIECE_FAILED, -1, -1
@@ -968,6 +978,41 @@ def _an_ulp_off(ex: cython.double, ey: cython.double, sx: cython.double, sy: cyt
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
+def _beside_splits(
+    m: Mesh, a: Index, c: Index, end: Index, sx: cython.double, sy: cython.double,
+) -> cython.bint:
+    """Will Triangle's crossing ``s`` beside input vertex ``end`` (an end of
+    subsegment edge ``c``, which the piece from ``a`` crosses after other
+    edges) split ``c`` cleanly once Triangle's flips have brought ``a`` to
+    it?  ``_split_at_crossing``'s test, asked before those flips: ``s`` an
+    ulp or more off ``end``, strictly inside ``c``, inside the two triangles
+    beside ``c`` now (so no vertex lies between ``c`` and its two pieces
+    through ``s``) and inside the triangle (``a``, right, left) that the
+    flips leave beside it, whose apex is then ``a``.
+
+    The flips fold the mesh until a vertex on the piece comes: the pocket
+    they leave on each side waits for it (``_fix_side``).  Where the answer
+    is no, ``_split_at_crossing`` takes ``end`` for the crossing, and no
+    vertex comes.  Both tests are needed: the flipped triangle overlaps the
+    pocket, and a pocket vertex within rounding of ``c``'s line can lie in
+    it between ``c`` and ``s`` (campaign seed 3031: Triangle's own mesh is
+    folded there, its triangle of that vertex, the crossing before and
+    ``s`` inverted)."""
+    xy = m.xy
+    right: Index = m.corner[lnext(c)]
+    left: Index = m.corner[lprev(c)]
+    if not (_an_ulp_off(xy[end, 0], xy[end, 1], sx, sy) and _within_subsegment(xy, right, left, sx, sy)):
+        return False
+    if not splits_cleanly(m, c, sx, sy):
+        return False
+    m.work[C_ORIENT] += 2
+    return (orient2d(sx, sy, xy[left, 0], xy[left, 1], xy[a, 0], xy[a, 1]) > 0.0
+            and orient2d(xy[a, 0], xy[a, 1], xy[right, 0], xy[right, 1], sx, sy) > 0.0)
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
 def _beside_end(
     m: Mesh, a: Index, b: Index, c: Index, plain: Index,
 ) -> tuple[Index, cython.double, cython.double, cython.double]:
@@ -1072,7 +1117,9 @@ def _split_at_crossing(
     ``E``'s marker at the end, as Triangle's copy shares ``E``'s
     subsegments), so the output has Triangle's vertices while the mesh
     stays a valid one.  Elsewhere (the point rounded out of the triangles
-    beside ``c``) ``E`` is taken as before.
+    beside ``c``) ``E`` is taken as before; where the piece crossed other
+    edges before ``c``, ``_recover`` decides that before Triangle's flips
+    (``_beside_splits``) and recovers the piece to ``E`` itself.
     """
     xy = m.xy
     nv: Index = m.nvert
