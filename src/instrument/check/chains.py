@@ -133,6 +133,28 @@ def _inner_vertices(U, W, X, pbox, sbox):
     return pp[order], ps[order], t[order]
 
 
+def _drop_bypassed_inputs(pp, ps, t, ids, X, U, W, iv, S):
+    """Leave out of a segment's nodes the input vertices that lie within
+    the tolerance of it but not exactly on it, where no output subsegment
+    ends at them: such a vertex is on one side of the segment, and the chain
+    may pass it by (Triangle's rule, and ours: an input vertex is on a
+    segment only when exactly on it).  Counted as a node it made a piece
+    that no subsegment covers: an input vertex 2^-1022 inside the side x = 0
+    of a square, an ulp from where a segment crosses that side, projected
+    beyond the crossing along the segment (concurrent-segments, seed 2).
+    Where the mesh's subsegments do end at it, it stays a node."""
+    if not len(pp):
+        return pp, ps, t
+    ends = np.unique(S) if len(S) else np.zeros(0, np.int64)
+    inputs = {tuple(p) for p in iv.tolist()}
+    keep = np.ones(len(pp), bool)
+    for k in np.flatnonzero(~np.isin(ids[pp], ends)).tolist():
+        p = tuple(X[pp[k]].tolist())
+        if p in inputs and orient_exact(tuple(U[ps[k]].tolist()), tuple(W[ps[k]].tolist()), p) != 0:
+            keep[k] = False
+    return pp[keep], ps[keep], t[keep]
+
+
 def input_chains(m: MeshView, pslg, probs: Problems) -> list:
     """Every input segment, where it meets the mesh, is a chain of subsegments.
 
@@ -178,6 +200,7 @@ def input_chains(m: MeshView, pslg, probs: Problems) -> list:
     sbox = np.stack([np.minimum(U[:, 0], W[:, 0]) - slack, np.maximum(U[:, 0], W[:, 0]) + slack,
                      np.minimum(U[:, 1], W[:, 1]) - slack, np.maximum(U[:, 1], W[:, 1]) + slack], 1)
     pp, ps, t = _inner_vertices(U, W, X, pbox, sbox)
+    pp, ps, t = _drop_bypassed_inputs(pp, ps, t, ids, X, U, W, iv, m.S[ok])
     # Nodes: endpoints (t = -inf / +inf) and the inner vertices, per segment.
     ns = len(segk)
     uid = np.array([where.get(tuple(p), -1) for p in U.tolist()], dtype=np.int64)
