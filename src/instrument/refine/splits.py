@@ -165,13 +165,16 @@ def _on_subsegment(m: Mesh, a: Index, b: Index, c: Index, loose: cython.bint) ->
     # The turn about c, which costs c's degree, comes last: a vertex far
     # from the subsegment (the apex of a fan of 9,350 triangles over two
     # segments 1e-188 radians apart, each of whose pieces' splits asked)
-    # made every split cost that much.
+    # made every split cost that much.  (On the line without the slack, c
+    # is on it with the slack too.)
+    if not loose:
+        return _on_segment_points(ax, ay, bx, by, cx, cy, 0.0)
+    if not _on_segment_points(ax, ay, bx, by, cx, cy, HALF_ULP):
+        return False
     if _on_segment_points(ax, ay, bx, by, cx, cy, 0.0):
         return True
-    if loose and _on_segment_points(ax, ay, bx, by, cx, cy, HALF_ULP):
-        e0: Index = vertex_edge(m, c)
-        return e0 < 0 or edge_around(m, e0, -1) < 0
-    return False
+    e0: Index = vertex_edge(m, c)
+    return e0 < 0 or edge_around(m, e0, -1) < 0
 
 
 @cython.cfunc
