@@ -837,6 +837,26 @@ def _near(xy: cython.double[:, ::1], v: Index, px: cython.double, py: cython.dou
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
+def _rounded_crossing(m: Mesh, a: Index, b: Index, c: Index) -> tuple[cython.double, cython.double, cython.double]:
+    """``(px, py, tol)``: where segment ``a b`` crosses subsegment edge ``c``,
+    exactly, rounded once, and the tolerance within which a vertex is taken
+    for that point: relative to the point, with a floor of one subnormal
+    unit (an absolute 1e-300 took every vertex of an input near 1e-300 for
+    the crossing)."""
+    xy = m.xy
+    left: Index = m.corner[lprev(c)]
+    right: Index = m.corner[lnext(c)]
+    px: cython.double
+    py: cython.double
+    px, py = crossing_point(
+        xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[right, 0], xy[right, 1], xy[left, 0], xy[left, 1]
+    )
+    return px, py, 2.0**-48 * (fabs(px) + fabs(py)) + 2.0**-1074
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
 def _inside(xy: cython.double[:, ::1], u: Index, w: Index, v: Index) -> cython.bint:
     """Does ``v`` lie strictly between ``u`` and ``w`` along the line
     ``u -> w`` (its projection on the line, exactly)?  A vertex taken for a
@@ -1027,10 +1047,8 @@ def _beside_end(
     right: Index = m.corner[lnext(c)]
     px: cython.double
     py: cython.double
-    px, py = crossing_point(
-        xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[right, 0], xy[right, 1], xy[left, 0], xy[left, 1]
-    )
-    tol: cython.double = 2.0**-48 * (fabs(px) + fabs(py)) + 2.0**-1074
+    tol: cython.double
+    px, py, tol = _rounded_crossing(m, a, b, c)
     near_right: cython.bint = _near(xy, right, px, py, tol)
     near_left: cython.bint = _near(xy, left, px, py, tol)
     t: cython.double
@@ -1126,15 +1144,11 @@ def _split_at_crossing(
     r: Index = m.seg[c]
     left: Index = m.corner[lprev(c)]
     right: Index = m.corner[lnext(c)]
-    # the exact crossing rounded once
+    # the exact crossing rounded once, and the tolerance about it
     px: cython.double
     py: cython.double
-    px, py = crossing_point(
-        xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[right, 0], xy[right, 1], xy[left, 0], xy[left, 1]
-    )
-    # relative to the point; the floor is one subnormal unit (an absolute
-    # 1e-300 took every vertex of an input near 1e-300 for the crossing)
-    tol: cython.double = 2.0**-48 * (fabs(px) + fabs(py)) + 2.0**-1074
+    tol: cython.double
+    px, py, tol = _rounded_crossing(m, a, b, c)
     # an end near the exact crossing is chosen by the rule above, from the
     # exact crossing: Triangle's doubles point is used only away from them
     # (taken first, it left some pairs crossing 1e-147 from an end unrecoverable)
