@@ -862,13 +862,7 @@ def _inside(xy: cython.double[:, ::1], u: Index, w: Index, v: Index) -> cython.b
     ``u -> w`` (its projection on the line, exactly)?  A vertex taken for a
     crossing becomes an inner vertex of a segment's chain, and a chain is
     straight only if its vertices come in order along the segment."""
-    ux: cython.double = xy[u, 0]
-    uy: cython.double = xy[u, 1]
-    wx: cython.double = xy[w, 0]
-    wy: cython.double = xy[w, 1]
-    vx: cython.double = xy[v, 0]
-    vy: cython.double = xy[v, 1]
-    return dot_sign(ux, uy, vx, vy, ux, uy, wx, wy) > 0 and dot_sign(vx, vy, wx, wy, ux, uy, wx, wy) > 0
+    return _within_subsegment(xy, u, w, xy[v, 0], xy[v, 1])
 
 
 @cython.ccall
