@@ -194,12 +194,14 @@ DEFECTS += [
         "rounding of the segment, which ours and Triangle leave off the segment, made a piece no subsegment "
         "covers; regressions/concurrent-crossings-near-input-vertex.json passes.) A free input vertex within rounding of a "
         "segment at 2^-101 under pq20c: ours refines to an ulp-sized triangle and raises PrecisionError where "
-        "Triangle makes 4,171 vertices (regressions/concurrent-crossings-vertex-on-segment-precision.json). Two "
-        "segments 1e-188 radians apart in a 1e300 square with a vertex 5e-301 from the corner under q34c "
-        "(Triangle crashes): ours' pieces of the two segments encroach each other along their whole length and "
-        "it reaches the vertex limit, after 20 s of CPU (tests/differential/open/concurrent-crossings-timeout.json; "
-        "the same shape under pq now stops at the limit in 9 s, since _on_subsegment no longer turns about the "
-        "fan's apex for every split)",
+        "Triangle makes 4,171 vertices (regressions/concurrent-crossings-vertex-on-segment-precision.json). Its "
+        "15 points from 5e-304 to 2e300 under q34cnz (no p: a point set; Triangle crashes) pass 20 s of CPU "
+        "long before the vertex limit: from about 2,000 Steiner points on, each insertion near the origin has "
+        "a cavity of about a thousand triangles fanned from the hull vertices near 1e300 (-S8000: 7,213 "
+        "vertices, 6.2 million incircle tests, 1.1 million walk steps; -S2000: 7,735 tests; "
+        "tests/differential/open/concurrent-crossings-timeout.json). (Two segments 1e-188 radians apart in a "
+        "1e300 square under pq, whose pieces encroach each other along their whole length, now stop at the "
+        "vertex limit in 9 s: _on_subsegment no longer turns about the fan's apex for every split.)",
         lambda c, f, n: c.family == "concurrent-segments" and f.kind in (
             "count", "markers", "area-total", "ours-error-where-triangle-meshes", "invalid-mesh", "ours-timeout"),
     ),
