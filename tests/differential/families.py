@@ -262,8 +262,8 @@ def _rounded_crossing(p, q, r, t):
 def concurrent_segments(draw):
     """Segments that meet another two where those cross: ending at, or
     passing through, their crossing computed in doubles (a drawing whose
-    program joined lines at their computed intersection), and moved from it
-    by a few units in the last place.  The three are concurrent within
+    program joined lines at their computed intersection), or another
+    segment's end, and moved from it by a few units in the last place.  The three are concurrent within
     rounding, so the crossing Triangle makes lies an ulp or two from the
     third segment's end or line (campaign cases of stop 30 and 31: a
     TriangleError where Triangle meshes)."""
@@ -273,8 +273,11 @@ def concurrent_segments(draw):
         pts += [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]
         segs += _cycle(4, 4)
     for _ in range(draw(st.integers(1, 3))):
-        i, j = draw(st.sampled_from([(a, b) for a in range(len(segs)) for b in range(a + 1, len(segs))]))
-        x = _rounded_crossing(pts[segs[i][0]], pts[segs[i][1]], pts[segs[j][0]], pts[segs[j][1]])
+        if draw(st.integers(0, 2)) == 0:  # beside an end: the point is an existing segment's end
+            x = pts[draw(st.sampled_from(segs))[draw(st.integers(0, 1))]]
+        else:
+            i, j = draw(st.sampled_from([(a, b) for a in range(len(segs)) for b in range(a + 1, len(segs))]))
+            x = _rounded_crossing(pts[segs[i][0]], pts[segs[i][1]], pts[segs[j][0]], pts[segs[j][1]])
         if x is None or not all(math.isfinite(c) and abs(c) < 4.0 for c in x):
             continue
         k = draw(st.integers(-2, 2))
