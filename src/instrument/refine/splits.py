@@ -757,6 +757,24 @@ def _collapsed(m: Mesh, h: Index, px: cython.double, py: cython.double) -> Index
     return edge
 
 
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _reject_at(r: Refiner, m: Mesh, e: Index, steps: cython.longlong) -> cython.int:
+    """Reject a Steiner point that lies on or across edge ``e`` (its walk
+    stopped there, or it rounded onto it): where ``e`` is a subsegment the
+    point encroaches it, and it is pooled if it may be split.  DONE, or
+    NEED_ROOM (nothing changed)."""
+    if m.seg[e] != NO_SEG and may_split(r, m, e):
+        if r.enc_live + 1 > r.enc.shape[0]:
+            step_undone(r, m.work)
+            return NEED_ROOM
+        enc_push(r, m, e)
+    m.work[C_REJECTED] += 1
+    trace_row(r, T_REJECTED, 0, 0, steps, r.hsize)
+    return DONE
+
+
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
@@ -869,28 +887,14 @@ def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cyth
         # stays whole and so does its triangle: the points (2^-126, 1)
         # (1.5 * 2^-399, 1) (3.66e-4, 0.125) under q25Y, one triangle, as
         # Triangle's (regressions/hull-needle-rounds-onto-subsegment.json)
-        if may_split(r, m, bad_edge):
-            if r.enc_live + 1 > r.enc.shape[0]:
-                step_undone(r, m.work)
-                return NEED_ROOM
-            enc_push(r, m, bad_edge)
-        m.work[C_REJECTED] += 1
-        trace_row(r, T_REJECTED, 0, 0, 0, r.hsize)
-        return DONE
+        return _reject_at(r, m, bad_edge, 0)
     if bad_edge >= 0:
         r.error_org = m.corner[lnext(bad_edge)]
         r.error_dest = m.corner[lprev(bad_edge)]
         r.error_apex = m.corner[bad_edge]
         return PRECISION
     if status == LOC_BLOCKED or (status == LOC_ON_EDGE and m.seg[e] != NO_SEG):
-        if m.seg[e] != NO_SEG and may_split(r, m, e):
-            if r.enc_live + 1 > r.enc.shape[0]:
-                step_undone(r, m.work)
-                return NEED_ROOM
-            enc_push(r, m, e)
-        m.work[C_REJECTED] += 1
-        trace_row(r, T_REJECTED, 0, 0, steps, r.hsize)
-        return DONE
+        return _reject_at(r, m, e, steps)
     if status == LOC_ON_VERTEX or (status != LOC_INSIDE and status != LOC_ON_EDGE):
         m.work[C_DUPLICATE] += 1
         return DONE
