@@ -449,6 +449,9 @@ def _recover(
     ct: cython.double
     csx: cython.double
     csy: cython.double
+    px: cython.double
+    py: cython.double
+    tol: cython.double
     while end < 0:
         if m.seg[c] != NO_SEG:
             if nq == 0:
@@ -457,7 +460,8 @@ def _recover(
             # the point twice: _split_at_crossing): the piece goes to that
             # end, by flips that leave no pocket waiting for a vertex on c
             # (Triangle's flips would, and no vertex comes)
-            y, ct, csx, csy = _beside_end(m, a, b, c, plain)
+            px, py, tol = _rounded_crossing(m, a, b, c)
+            y, ct, csx, csy = _beside_end(m, a, b, c, plain, px, py, tol)
             if y >= 0 and csx == xy[y, 0] and csy == xy[y, 1]:
                 end = y
                 fuzzy = True
@@ -1028,21 +1032,17 @@ def _beside_splits(
 @cython.nogil
 @cython.exceptval(check=False)
 def _beside_end(
-    m: Mesh, a: Index, b: Index, c: Index, plain: Index,
+    m: Mesh, a: Index, b: Index, c: Index, plain: Index, px: cython.double, py: cython.double, tol: cython.double,
 ) -> tuple[Index, cython.double, cython.double, cython.double]:
     """``(E, t, sx, sy)``: where segment ``a b`` (walked from ``a``) crosses
     subsegment edge ``c`` within rounding of an input vertex ``E`` ending
     ``c``, and of no end of ``a b``, that vertex, with Triangle's crossing
     (``scouted_crossing``: t along ``c``, the point s); ``E = -1`` elsewhere.
-    "Within rounding" is ``_split_at_crossing``'s tolerance about the exact
-    crossing rounded once."""
+    "Within rounding" is ``tol`` about the exact crossing rounded once,
+    ``(px, py)`` (``_rounded_crossing``'s)."""
     xy = m.xy
     left: Index = m.corner[lprev(c)]
     right: Index = m.corner[lnext(c)]
-    px: cython.double
-    py: cython.double
-    tol: cython.double
-    px, py, tol = _rounded_crossing(m, a, b, c)
     near_right: cython.bint = _near(xy, right, px, py, tol)
     near_left: cython.bint = _near(xy, left, px, py, tol)
     t: cython.double
@@ -1161,7 +1161,7 @@ def _split_at_crossing(
     bt: cython.double
     bx: cython.double
     by: cython.double
-    end, bt, bx, by = _beside_end(m, a, b, c, plain)
+    end, bt, bx, by = _beside_end(m, a, b, c, plain, px, py, tol)
     beside: cython.bint = False  # Triangle's point beside end, where it splits c cleanly
     if end >= 0:
         if bx == xy[end, 0] and by == xy[end, 1]:  # Triangle's copy of end
