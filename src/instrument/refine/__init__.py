@@ -223,6 +223,11 @@ def _reused(slots: int, queue: int, records: int) -> Refiner | None:
     if r.cav.shape[0] < slots or r.hkey.shape[0] < queue or r.enc.shape[0] < records:
         return None  # (too small: dropped, and a new one made)
     queue_clear(r)
+    # a new run's state: no slot's Triangle orientation known until its
+    # first list (ghosts.records_known; the last run's rows could match a
+    # new slot's stamp and corner), the ghosts' names read as written
+    r.orient_ready = False
+    r.ghost_swapped = False
     return r
 
 
