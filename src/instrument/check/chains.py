@@ -136,22 +136,37 @@ def _inner_vertices(U, W, X, pbox, sbox):
 def _drop_bypassed_inputs(pp, ps, t, ids, X, U, W, iv, S):
     """Leave out of a segment's nodes the input vertices that lie within
     the tolerance of it but not exactly on it, where no output subsegment
-    ends at them: such a vertex is on one side of the segment, and the chain
-    may pass it by (Triangle's rule, and ours: an input vertex is on a
-    segment only when exactly on it).  Counted as a node it made a piece
-    that no subsegment covers: an input vertex 2^-1022 inside the side x = 0
-    of a square, an ulp from where a segment crosses that side, projected
-    beyond the crossing along the segment (concurrent-segments, seed 2).
-    Where the mesh's subsegments do end at it, it stays a node."""
+    along that segment ends at them: such a vertex is on one side of the
+    segment, and the chain may pass it by (Triangle's rule, and ours: an
+    input vertex is on a segment only when exactly on it).  Counted as a node
+    it made a piece that no subsegment covers: an input vertex 2^-1022 inside
+    the side x = 0 of a square, an ulp from where a segment crosses that
+    side, projected beyond the crossing along the segment (concurrent-segments,
+    seed 2); the same at 2^-126 where the vertex is the end of another
+    segment, whose subsegment ends there but runs elsewhere (crossing-segments,
+    campaign seed 3201).  Where a subsegment on the segment's line ends at
+    it, it stays a node."""
     if not len(pp):
         return pp, ps, t
-    ends = np.unique(S) if len(S) else np.zeros(0, np.int64)
-    inputs = {tuple(p) for p in iv.tolist()}
+    def rows(a):  # points as byte strings (+ 0.0: -0.0 is 0.0)
+        return np.ascontiguousarray(a + 0.0).view(np.dtype((np.void, 16))).ravel()
+
+    candidates = np.flatnonzero(np.isin(rows(X[pp]), rows(iv)))
+    if not len(candidates):
+        return pp, ps, t
+    partners = defaultdict(list)  # output vertex -> the other ends of its subsegments
+    for a, b in S.tolist():
+        partners[a].append(b)
+        partners[b].append(a)
+    where = {w: k for k, w in enumerate(ids.tolist())}
     keep = np.ones(len(pp), bool)
-    for k in np.flatnonzero(~np.isin(ids[pp], ends)).tolist():
+    for k in candidates.tolist():
         p = tuple(X[pp[k]].tolist())
-        if p in inputs and orient_exact(tuple(U[ps[k]].tolist()), tuple(W[ps[k]].tolist()), p) != 0:
-            keep[k] = False
+        u, w = tuple(U[ps[k]].tolist()), tuple(W[ps[k]].tolist())
+        if orient_exact(u, w, p) == 0:
+            continue
+        along = (q for q in partners.get(int(ids[pp[k]]), ()) if q in where)
+        keep[k] = any(_on_line(u, w, tuple(X[where[q]].tolist())) for q in along)
     return pp[keep], ps[keep], t[keep]
 
 
