@@ -43,7 +43,7 @@ def test_steep_angles_stop_at_the_limit(angle):
 # segments): the domain is a sliver whose every subsegment its opposite side
 # encroaches, so refinement only splits subsegments (the input's, before any
 # bad triangle is listed) and never ends (differential regression
-# sliver-hull-limit-slow).
+# regressions/sliver-hull-limit.json).
 SLIVER = {
     "vertices": [[float.fromhex(x), float.fromhex(y)] for x, y in (
         ("0x1.e000000000000p-3", "0x1.3ffffffffffa0p-4"), ("0x1.6000000000000p-1", "0x1.d55555555558dp-3"),
