@@ -28,7 +28,7 @@ times that); refinement uses 290-420 bytes a vertex at its peak (measured:
 vertex stays flat; where it grows with the mesh it is more (six points within
 rounding of a line under ``pq34a0.000899cvi``: a sliver of area ~1e-17, so
 the floor alone, whose split points' cavities are fans of hundreds of
-triangles across it: 14 s), and no rule of the input's size tells such an
+triangles across it, open defect sliver-hull-limit-slow: 14 s), and no rule of the input's size tells such an
 input from one whose mesh is legitimately that large, so the limit stays
 the same for it.  A run that passes the limit stops with ``SizeLimitError``
 (the kernel hands control back at least every 16,384 steps, splits of
