@@ -196,11 +196,17 @@ DEFECTS += [
         "covers; regressions/concurrent-crossings-near-input-vertex.json passes.) A free input vertex within rounding of a "
         "segment at 2^-101 under pq20c: ours refines to an ulp-sized triangle and raises PrecisionError where "
         "Triangle makes 4,171 vertices (regressions/concurrent-crossings-vertex-on-segment-precision.json). Its "
-        "15 points from 5e-304 to 2e300 under q34cnz (no p: a point set; Triangle crashes) pass 20 s of CPU "
-        "long before the vertex limit: from about 2,000 Steiner points on, each insertion near the origin has "
-        "a cavity of about a thousand triangles fanned from the hull vertices near 1e300 (-S8000: 7,213 "
-        "vertices, 6.2 million incircle tests, 1.1 million walk steps; -S2000: 7,735 tests; "
-        "tests/differential/open/concurrent-crossings-timeout.json). (Two segments 1e-188 radians apart in a "
+        "15 points from 5e-304 to 2e300 under q34cnz (no p: a point set; Triangle crashes on it under every "
+        "switch string, Q alone and -S0 included) pass 20 s of CPU long before the vertex limit; the work is "
+        "the mesh's own, under Triangle's rules: a hull subsegment on the x-axis is halved towards the origin "
+        "~2,000 times (1e300 down to 1e-303), and a free vertex near the origin, (1.43e-303, 1.04e-303), is "
+        "joined to every one of those collinear points (degree 1,528 at -S2500, 1,778 at -S3000; the checker "
+        "finds both meshes constrained Delaunay). From -S2500 on, an off-center p = (-3.4e-304, 1.05e-303) is "
+        "inserted, then deleted by Chew's rule when the next halving splits the subsegment whose diametral "
+        "circle holds it, and inserted again: its cavity is 1,519 triangles, exactly the triangles whose "
+        "circumcircles hold it (exact incircle on the -S2500 mesh). Past -S25000 each halving deletes free "
+        "vertices with stars of ~640 triangles (-S25000: 4.7 s, 9.75 million incircle tests; -S26000 "
+        "passes 100 s) (tests/differential/open/concurrent-crossings-timeout.json). (Two segments 1e-188 radians apart in a "
         "1e300 square under pq, whose pieces encroach each other along their whole length, now stop at the "
         "vertex limit in 9 s: _on_subsegment no longer turns about the fan's apex for every split.)",
         lambda c, f, n: c.family == "concurrent-segments" and f.kind in (
@@ -236,13 +242,24 @@ DEFECTS += [
         lambda c, f, n: (c.family == "crossing-segments" and f.kind in ("count", "markers", "area-total", "size")
                          and _segment_through_input_vertex(c)),
     ),
+]
+
+DEFECTS += [
     Defect(
         "sliver-hull-limit-slow",
-        "Six points within rounding of a line (near-collinear-chain, a chain of 5 segments) under pq34a0.000899cvi "
-        "(campaign seed 3101): the domain is a sliver that no 34-degree mesh fills, and ours stops at the vertex "
-        "limit (SizeLimitError at 1,372,556 vertices) after 28 s of CPU, past the harness's 20 s; Triangle runs "
-        "past its 10 s too. The run grows faster than linearly: 128,000 Steiner points in 0.54 s (7 incircle "
-        "tests each), 512,000 in 3.8 s (14 each) (tests/differential/open/sliver-hull-limit-slow.json)",
+        "Six points within rounding of the line y = x / 3 (near-collinear-chain, a chain of 5 segments) under "
+        "pq34a0.000899cvi (campaign seed 3101; regressions/sliver-hull-limit.json, which now passes: the kernel "
+        "pauses during subsegment splitting, so the run stops at the vertex limit, 1,004,792 vertices in 14 s, "
+        "where it stopped at 1,372,556 after 28 s). Its work still grows faster than its output (incircle tests "
+        "per vertex 7 at -S128000, 21 at -S1024000; 12.9 s at -S1024000, Triangle 2.6 s), and the cause is ours: "
+        "the 7th split takes the hull subsegment (0.9375, ..) - (0.7003, ..) at the chain's split vertex "
+        "(0.8782, ..), which lies within 2^-50 of its line (splits._split_at_apex), where Triangle splits at the "
+        "midpoint (0.8189, ..); from there ours' vertices join the sliver's two sides and fans grow from single "
+        "vertices (max degree 1,179 at -S128000 and 5,021 at -S512000, Triangle's 50 and 236; ours' meshes "
+        "constrained Delaunay by the checker, Triangle's failing it from -S1000 on). Splitting at an apex only "
+        "when it was not made by splitting a subsegment makes ours' first 300 splits Triangle's and the run "
+        "linear (-S1024000: 3.0 s, 7.5 tests per vertex; the limit in 2.1 s), golden 0 of 450, but leaves "
+        "tests/engine/test_split_at_vertex.py's apex split with flips without a case",
         lambda c, f, n: (f.kind == "ours-timeout" and c.family == "near-collinear-chain"
                          and read_switches(c.switches).angle >= 34),
     ),

@@ -39,6 +39,33 @@ def test_steep_angles_stop_at_the_limit(angle):
     assert isinstance(info.value, RuntimeError) and isinstance(info.value, ValueError)
 
 
+# Six points within rounding of the line y = x / 3 (a chain of five
+# segments): the domain is a sliver whose every subsegment its opposite side
+# encroaches, so refinement only splits subsegments (the input's, before any
+# bad triangle is listed) and never ends (differential regression
+# regressions/sliver-hull-limit.json).
+SLIVER = {
+    "vertices": [[float.fromhex(x), float.fromhex(y)] for x, y in (
+        ("0x1.e000000000000p-3", "0x1.3ffffffffffa0p-4"), ("0x1.6000000000000p-1", "0x1.d55555555558dp-3"),
+        ("0x1.8000000000000p-1", "0x1.ffffffffffff8p-3"), ("0x1.a000000000000p-1", "0x1.155555555554dp-2"),
+        ("0x1.e000000000000p-1", "0x1.3ffffffffffecp-2"), ("0x1.f000000000000p-1", "0x1.4aaaaaaaaaac2p-2"))],
+    "segments": [[0, 1], [1, 2], [2, 3], [3, 4], [4, 5]],
+}
+
+
+def test_splitting_subsegments_alone_stops_at_the_limit():
+    """The kernel hands back control (and the driver sees the limit) after
+    every slice of subsegment splits too, not only when its arrays grow:
+    the sliver, one vertex a split, stopped at 1,372,556 vertices for the
+    default limit of 1,000,000."""
+    seen = [0]
+    with pytest.raises(SizeLimitError) as info:
+        instrument.triangulate(SLIVER, "pq34a0.000899cviQ", max_vertices=110_000, progress=lambda n, limit: seen.append(n))
+    n = int(str(info.value).split()[3].replace(",", ""))
+    assert 110_000 < n <= 110_000 + 2**14 + 64
+    assert max(np.diff(seen)) <= 2**14 + 64
+
+
 @pytest.mark.parametrize("angle", [36, 60])
 def test_a_steeper_angle_may_run_out_of_precision_first_and_says_why(angle):
     """At 60 degrees refinement splits towards one corner of A until the

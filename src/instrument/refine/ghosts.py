@@ -370,6 +370,7 @@ def note_born(r: Refiner, m: Mesh, ok: cython.bint, nb: Index, first: Index) -> 
         r.orient[t, 0] = r.fan_rec[j, 1] if ok else 0
         r.orient[t, 1] = m.stamp[t] if ok and r.fan_rec[j, 2] else 0
         r.orient[t, 2] = m.corner[3 * t]
+    i: Index
     for i in range(first, r.log_length):
         t = r.htri[i]
         if t < 0:
@@ -377,12 +378,16 @@ def note_born(r: Refiner, m: Mesh, ok: cython.bint, nb: Index, first: Index) -> 
         r.born[t, 0] = i
         r.born[t, 1] = -1
         r.born[t, 2] = m.stamp[t]
-        if ok:
-            for j in range(nb):
-                if r.fan[j] == t:
-                    if r.fan_rec[j, 2]:
-                        r.born[t, 1] = r.fan_rec[j, 1]
-                    break
+    if not ok:
+        return
+    # then the orientations of the fan's triangles among them (a fan
+    # triangle was queued now if its last entry is one of these: a scan of
+    # the fan per entry made a fan of a thousand triangles a million steps)
+    for j in range(nb):
+        t = r.fan[j]
+        i = r.born[t, 0]
+        if r.fan_rec[j, 2] and first <= i < r.log_length and r.htri[i] == t:
+            r.born[t, 1] = r.fan_rec[j, 1]
 
 
 @cython.ccall

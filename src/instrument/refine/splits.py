@@ -69,7 +69,8 @@ from cython.cimports.instrument.refine.queues import ghost_room, ghost_slot, gho
 from cython.cimports.instrument.refine.state import T_CIRCUMCENTER, T_OFFCENTER, T_REJECTED, T_SEGMENT, Refiner, step_begins, step_undone, trace_full, trace_row
 from cython.cimports.libc.math import fabs, hypot, nextafter, sqrt
 
-#: bad triangles taken between two PAUSEs
+#: steps (queue pops, subsegment splits) between two PAUSEs, so that the
+#: driver sees Ctrl-C and the vertex limit at least that often
 PAUSE_EVERY = cython.declare(Index, 1 << 14)
 
 #: A vertex this close to a subsegment's line (relative to the largest
@@ -614,8 +615,8 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
 @cython.exceptval(check=False)
 def split_encroached(r: Refiner, m: Mesh, segs: Subsegments, triangles: cython.bint) -> cython.int:
     """Split pooled encroached subsegments until none is left (or the budget
-    is spent), in passes over the pool.  Returns DONE, NEED_ROOM or
-    PRECISION."""
+    is spent), in passes over the pool.  Returns DONE, NEED_ROOM, PAUSE
+    (every ``PAUSE_EVERY`` steps; call again to go on) or PRECISION."""
     if not r.enc_busy:  # each call starts at the pool's first slot, as Triangle's does
         r.enc_busy = True
         r.enc_cursor = 0
@@ -665,6 +666,14 @@ def split_encroached(r: Refiner, m: Mesh, segs: Subsegments, triangles: cython.b
         r.acute_slot = -1
         enc_free(r, i)
         r.enc_cursor = i + 1
+        # a pause between two splits (the pool's pass resumes at the cursor):
+        # splitting the input's subsegments alone can take the mesh far past
+        # the vertex limit between two growths of the arrays (a sliver of
+        # near-collinear segments: 1,372,556 vertices for a limit of 1,000,000)
+        r.since_pause += 1
+        if r.since_pause >= PAUSE_EVERY and r.enc_live > 0 and r.budget != 0:
+            r.since_pause = 0
+            return PAUSE
     r.enc_busy = False
     return DONE
 
@@ -1062,10 +1071,10 @@ def refine(r: Refiner, m: Mesh, segs: Subsegments) -> cython.int:
         # 2,026 of 2,696), and a stale pop changes nothing the checks above
         # read but the queue's size: pop again here, without them.
         while True:
-            if r.taken >= PAUSE_EVERY:
-                r.taken = 0
+            if r.since_pause >= PAUSE_EVERY:
+                r.since_pause = 0
                 return PAUSE
-            r.taken += 1
+            r.since_pause += 1
             i = queue_pop(r)
             t = r.htri[i]
             stamp = r.hstamp[i]

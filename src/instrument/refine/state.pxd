@@ -32,7 +32,7 @@ cdef class Refiner:
     cdef public Index current        # triangle being split, kept across a NEED_ROOM (-1 none)
     cdef public long long current_stamp  # and its stamp when it was queued
     cdef public double current_key   # and its queue key
-    cdef public Index taken          # bad triangles taken since the last PAUSE
+    cdef public Index since_pause    # queue pops and subsegment splits since the last PAUSE
     cdef public Index need           # with NEED_ROOM: the triangles (and queue entries) one step needs
     cdef public Index error_org      # with PRECISION: the subsegment's end vertices
     cdef public Index error_dest

@@ -108,7 +108,7 @@ class Refiner:
         self.current = -1
         self.current_stamp = 0
         self.current_key = 0.0
-        self.taken = 0
+        self.since_pause = 0
         self.need = 0
         self.error_org = -1
         self.error_dest = -1
