@@ -68,6 +68,7 @@ FREED_LAST = cython.declare(cython.longlong, -2)
 
 
 @cython.cfunc
+@cython.inline
 @cython.nogil
 @cython.exceptval(check=False)
 def _ghost_name(r: Refiner, k: Index) -> Index:
@@ -89,6 +90,7 @@ def _ghost_name(r: Refiner, k: Index) -> Index:
 
 
 @cython.cfunc
+@cython.inline
 @cython.nogil
 @cython.exceptval(check=False)
 def _edge_orientation(r: Refiner, m: Mesh, e: Index) -> Index:
@@ -101,6 +103,7 @@ def _edge_orientation(r: Refiner, m: Mesh, e: Index) -> Index:
 
 
 @cython.cfunc
+@cython.inline
 @cython.nogil
 @cython.exceptval(check=False)
 def _kept(r: Refiner, m: Mesh, row: Index, e: Index, h: Index, up: Index) -> cython.void:
@@ -117,6 +120,7 @@ def _kept(r: Refiner, m: Mesh, row: Index, e: Index, h: Index, up: Index) -> cyt
 
 
 @cython.cfunc
+@cython.inline
 @cython.nogil
 @cython.exceptval(check=False)
 def _new(r: Refiner, row: Index, e: Index, rec: Index) -> cython.void:
@@ -370,19 +374,15 @@ def note_born(r: Refiner, m: Mesh, ok: cython.bint, nb: Index, first: Index) -> 
         r.orient[t, 0] = r.fan_rec[j, 1] if ok else 0
         r.orient[t, 1] = m.stamp[t] if ok and r.fan_rec[j, 2] else 0
         r.orient[t, 2] = m.corner[3 * t]
+    # the test queues fan triangles only, each once: an entry's orientation
+    # is its slot's, just noted (known: the stamp, > 0 for a live slot)
     for i in range(first, r.log_length):
         t = r.htri[i]
         if t < 0:
             continue
         r.born[t, 0] = i
-        r.born[t, 1] = -1
+        r.born[t, 1] = r.orient[t, 0] if r.orient[t, 1] != 0 else -1
         r.born[t, 2] = m.stamp[t]
-        if ok:
-            for j in range(nb):
-                if r.fan[j] == t:
-                    if r.fan_rec[j, 2]:
-                        r.born[t, 1] = r.fan_rec[j, 1]
-                    break
 
 
 @cython.ccall
