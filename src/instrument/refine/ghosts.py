@@ -340,7 +340,7 @@ def insertion_records(r: Refiner, m: Mesh, e: Index, on_edge: cython.bint, nb: I
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
-def revive_ghosts(r: Refiner, m: Mesh, ok: cython.bint, nb: Index, two: cython.bint) -> cython.void:
+def revive_ghosts(r: Refiner, m: Mesh, ok: cython.bint, nb: Index, two: cython.bint) -> cython.bint:
     """The vertex about to be made takes the vertex record the ghosts wait
     for: revive those whose record and orientation its fan gives their
     triangle again (``r.fan_rec[:nb]``, if ``ok``: insertion_records), and
@@ -348,9 +348,11 @@ def revive_ghosts(r: Refiner, m: Mesh, ok: cython.bint, nb: Index, two: cython.b
     between, queues.ghosts_orphaned) go on waiting if their record is
     still theirs then: a new one if this split takes two new triangle
     records (``two``: the two the last deletion freed), a kept one if the
-    split does not touch it."""
+    split does not touch it.  Whether any was revived (the vertex's fan,
+    once made, has triangles for queues.ghosts_made to note)."""
     g: Index = r.nghost - 1
     live: cython.bint
+    revived: cython.bint = False
     j: Index
     k: Index
     # (the rows of the vertices made last, revived or dropped, may follow
@@ -376,7 +378,9 @@ def revive_ghosts(r: Refiner, m: Mesh, ok: cython.bint, nb: Index, two: cython.b
                     live = True
                     break
         ghost_revive(r, g, live)
+        revived = revived or live
         g -= 1
+    return revived
 
 
 @cython.ccall
