@@ -627,13 +627,19 @@ def split_encroached(r: Refiner, m: Mesh, segs: Subsegments, triangles: cython.b
     status: cython.int
     fresh: Index
     ok: cython.bint
+    low: cython.bint
     while r.enc_live > 0 and r.budget != 0:
         # over the free slots to the next record, in a loop of its own: the
         # pool is mostly free slots, and each call scans it from the start
-        i = r.enc_cursor
+        # (from enc_low: la.poly under pq30 has three quarters of the slots
+        # a call would scan below its first record)
+        i = max(r.enc_cursor, r.enc_low)
+        low = i == r.enc_low
         fresh = r.enc_fresh
         while i < fresh and r.enc[i, 0] < 0:
             i += 1
+        if low:  # the first record
+            r.enc_low = i
         r.enc_cursor = i
         if i >= fresh:  # the next pass
             r.enc_cursor = 0
