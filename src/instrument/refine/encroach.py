@@ -37,6 +37,8 @@ def enc_push(r: Refiner, m: Mesh, e: Index) -> cython.void:
     r.enc[i, 2] = e
     r.enc[i, 3] = m.stamp[e // 3]
     r.enc_live += 1
+    if i < r.enc_low:
+        r.enc_low = i
 
 
 @cython.ccall

@@ -5,7 +5,7 @@ from instrument.refine.state cimport Refiner
 cpdef bint rejected_fan_records(Refiner r, Mesh m, Index e, bint on_edge, Index nb) noexcept nogil
 cpdef void rejected_bounds(Refiner r, Mesh m, Index e, bint on_edge) noexcept nogil
 cpdef bint insertion_records(Refiner r, Mesh m, Index e, bint on_edge, Index nb) noexcept nogil
-cpdef void revive_ghosts(Refiner r, Mesh m, bint ok, Index nb, bint two) noexcept nogil
+cpdef bint revive_ghosts(Refiner r, Mesh m, bint ok, Index nb, bint two) noexcept nogil
 cpdef void note_born(Refiner r, Mesh m, bint ok, Index nb, Index first) noexcept nogil
 cpdef void records_known(Refiner r, Mesh m) noexcept nogil
 cpdef void requeued(Refiner r, Index t) noexcept nogil

@@ -68,6 +68,7 @@ FREED_LAST = cython.declare(cython.longlong, -2)
 
 
 @cython.cfunc
+@cython.inline
 @cython.nogil
 @cython.exceptval(check=False)
 def _ghost_name(r: Refiner, k: Index) -> Index:
@@ -89,18 +90,40 @@ def _ghost_name(r: Refiner, k: Index) -> Index:
 
 
 @cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _up(k: Index, n: Index) -> Index:
+    """Orientation (or corner) ``k`` turned ``n`` up, both 0, 1 or 2: (k + n)
+    % 3 without a division (every flip and kept record takes some)."""
+    k += n
+    return k - 3 if k >= 3 else k
+
+
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _slot(e: Index) -> Index:
+    """The slot of edge ``e`` (>= 0): e // 3, the unsigned division being the shorter."""
+    return cython.cast(Index, cython.cast(cython.size_t, e) // 3)
+
+
+@cython.cfunc
+@cython.inline
 @cython.nogil
 @cython.exceptval(check=False)
 def _edge_orientation(r: Refiner, m: Mesh, e: Index) -> Index:
     """The orientation of edge ``e``'s handle in its triangle's Triangle
     record, or -1 if not known (records_known, note_born)."""
-    t: Index = e // 3
+    t: Index = _slot(e)
     if not r.orient_ready or r.orient[t, 1] != m.stamp[t] or r.orient[t, 2] != m.corner[3 * t]:
         return -1
-    return (e - 3 * t + r.orient[t, 0]) % 3
+    return _up(e - 3 * t, r.orient[t, 0])
 
 
 @cython.cfunc
+@cython.inline
 @cython.nogil
 @cython.exceptval(check=False)
 def _kept(r: Refiner, m: Mesh, row: Index, e: Index, h: Index, up: Index) -> cython.void:
@@ -110,13 +133,15 @@ def _kept(r: Refiner, m: Mesh, row: Index, e: Index, h: Index, up: Index) -> cyt
     else relative to ours' slot layout, which serves where both times of a
     comparison see the same layout (a rejected point's ghosts)."""
     o: Index = _edge_orientation(r, m, h)
+    t: Index = _slot(h)
     r.lineage[row, 0] = e
-    r.lineage[row, 1] = h // 3
-    r.lineage[row, 2] = (h - 3 * (h // 3) + up) % 3 if o < 0 else (o + up) % 3
+    r.lineage[row, 1] = t
+    r.lineage[row, 2] = _up(h - 3 * t if o < 0 else o, up)
     r.lineage[row, 3] = o >= 0
 
 
 @cython.cfunc
+@cython.inline
 @cython.nogil
 @cython.exceptval(check=False)
 def _new(r: Refiner, row: Index, e: Index, rec: Index) -> cython.void:
@@ -141,40 +166,43 @@ def _lineage(r: Refiner, m: Mesh, top: Index, nb: Index) -> cython.bint:
     the stack is too small (nothing to rely on)."""
     out: Index = 0
     r.nflips = 0
-    e: Index
-    rec: Index
-    k: Index
+    e: Index = 0
+    rec: Index = 0
+    k: Index = 0
+    known: Index = 0
     tw: Index
     y: Index
-    known: Index
-    while top > 0:
-        top -= 1
-        e = r.lineage[top, 0]
-        rec = r.lineage[top, 1]
-        k = r.lineage[top, 2]
+    held: cython.bint = False  # the stack's top row is (e, rec, k, known), not stored
+    while held or top > 0:
+        if not held:
+            top -= 1
+            e = r.lineage[top, 0]
+            rec = r.lineage[top, 1]
+            k = r.lineage[top, 2]
+            known = r.lineage[top, 3]
+        held = False
         tw = m.twin[e]
-        if tw != NO_EDGE and m.seg[e] == NO_SEG and m.tflag[tw // 3] == 1:
-            # flip: this record goes on with a -> f (lnext of the twin b -> a),
-            # the other triangle's with f -> b, one above its edge b -> a
+        if tw != NO_EDGE and m.seg[e] == NO_SEG and m.tflag[_slot(tw)] == 1:
+            # flip: this record goes on with a -> f (lnext of the twin b -> a,
+            # on top: held), the other triangle's with f -> b, one above its
+            # edge b -> a
             if top + 2 > r.lineage.shape[0]:
                 return False
-            y = tw // 3
+            y = _slot(tw)
             r.flips[r.nflips, 0] = rec
             r.flips[r.nflips, 1] = y
             r.nflips += 1
-            known = r.lineage[top, 3]
             _kept(r, m, top, lprev(tw), tw, 1)
-            r.lineage[top + 1, 0] = lnext(tw)
-            r.lineage[top + 1, 1] = rec
-            r.lineage[top + 1, 2] = (k + 2) % 3
-            r.lineage[top + 1, 3] = known
-            top += 2
+            top += 1
+            e = lnext(tw)
+            k = _up(k, 2)
+            held = True
             continue
         if out >= nb or r.bnd[r.fan[out], 4] != e:
             return False
         r.fan_rec[out, 0] = rec
         r.fan_rec[out, 1] = k
-        r.fan_rec[out, 2] = r.lineage[top, 3]
+        r.fan_rec[out, 2] = known
         out += 1
     return out == nb
 
@@ -312,7 +340,7 @@ def insertion_records(r: Refiner, m: Mesh, e: Index, on_edge: cython.bint, nb: I
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
-def revive_ghosts(r: Refiner, m: Mesh, ok: cython.bint, nb: Index, two: cython.bint) -> cython.void:
+def revive_ghosts(r: Refiner, m: Mesh, ok: cython.bint, nb: Index, two: cython.bint) -> cython.bint:
     """The vertex about to be made takes the vertex record the ghosts wait
     for: revive those whose record and orientation its fan gives their
     triangle again (``r.fan_rec[:nb]``, if ``ok``: insertion_records), and
@@ -320,9 +348,11 @@ def revive_ghosts(r: Refiner, m: Mesh, ok: cython.bint, nb: Index, two: cython.b
     between, queues.ghosts_orphaned) go on waiting if their record is
     still theirs then: a new one if this split takes two new triangle
     records (``two``: the two the last deletion freed), a kept one if the
-    split does not touch it."""
+    split does not touch it.  Whether any was revived (the vertex's fan,
+    once made, has triangles for queues.ghosts_made to note)."""
     g: Index = r.nghost - 1
     live: cython.bint
+    revived: cython.bint = False
     j: Index
     k: Index
     # (the rows of the vertices made last, revived or dropped, may follow
@@ -348,7 +378,9 @@ def revive_ghosts(r: Refiner, m: Mesh, ok: cython.bint, nb: Index, two: cython.b
                     live = True
                     break
         ghost_revive(r, g, live)
+        revived = revived or live
         g -= 1
+    return revived
 
 
 @cython.ccall
@@ -370,24 +402,15 @@ def note_born(r: Refiner, m: Mesh, ok: cython.bint, nb: Index, first: Index) -> 
         r.orient[t, 0] = r.fan_rec[j, 1] if ok else 0
         r.orient[t, 1] = m.stamp[t] if ok and r.fan_rec[j, 2] else 0
         r.orient[t, 2] = m.corner[3 * t]
-    i: Index
+    # the test queues fan triangles only, each once: an entry's orientation
+    # is its slot's, just noted (known: the stamp, > 0 for a live slot)
     for i in range(first, r.log_length):
         t = r.htri[i]
         if t < 0:
             continue
         r.born[t, 0] = i
-        r.born[t, 1] = -1
+        r.born[t, 1] = r.orient[t, 0] if r.orient[t, 1] != 0 else -1
         r.born[t, 2] = m.stamp[t]
-    if not ok:
-        return
-    # then the orientations of the fan's triangles among them (a fan
-    # triangle was queued now if its last entry is one of these: a scan of
-    # the fan per entry made a fan of a thousand triangles a million steps)
-    for j in range(nb):
-        t = r.fan[j]
-        i = r.born[t, 0]
-        if r.fan_rec[j, 2] and first <= i < r.log_length and r.htri[i] == t:
-            r.born[t, 1] = r.fan_rec[j, 1]
 
 
 @cython.ccall
@@ -481,7 +504,7 @@ def deletion_ghosts(r: Refiner, m: Mesh, v: Index, tris: cython.longlong[:], d: 
         r.ghost[g, 1] = m.corner[3 * t + (c + 2) % 3]
         r.ghost[g, 2] = m.nvert
         r.ghost[g, 3] = STAR_PLACE - k
-        r.ghost[g, 4] = (r.born[t, 1] + c) % 3
+        r.ghost[g, 4] = _up(r.born[t, 1], c)
         entry_to_ghost(r, i, g)
 
 
@@ -578,10 +601,10 @@ def deletion_orientations(r: Refiner, m: Mesh, order: cython.longlong[:], made: 
                 r.orient[order[j], 1] = 0
             return
         # ours' edge 0 of (z, n, p) is n -> p, the ear's handle
-        r.orient[t, 0] = (r.lineage[p, 0] + 2) % 3
+        r.orient[t, 0] = _up(r.lineage[p, 0], 2)
         r.orient[t, 1] = m.stamp[t] if r.lineage[p, 1] else 0
         r.orient[t, 2] = m.corner[3 * t]
-        r.lineage[p, 0] = (r.lineage[z, 0] + 2) % 3
+        r.lineage[p, 0] = _up(r.lineage[z, 0], 2)
         r.lineage[p, 1] = r.lineage[z, 1]
         r.lineage[p, 3] = n
         r.lineage[n, 2] = p

@@ -3,14 +3,19 @@ from instrument.core.mesh cimport Index, Mesh
 from instrument.refine.order cimport TRIANGLE
 from instrument.refine.state cimport Refiner
 
+cpdef enum:
+    GHOST_LIVE = 9   # a ghost row's orientation once its vertex's insertion has revived it
+    # how many Chew deletions a ghost row may wait through (queues.ghosts_orphaned): each
+    # puts its vertex one later, so the rows of the vertices made since are the last ones,
+    # whose vertex is at most this many + 1 before the next (ghost_recent)
+    GHOST_DEFER = 2
+
 cpdef void queue_clear(Refiner r) noexcept nogil
 cpdef void bucket_make_ready(Refiner r, Index b) noexcept nogil
 cpdef Index queue_pop(Refiner r) noexcept nogil
 cpdef void queue_compact(Refiner r, Mesh m) noexcept nogil
 cpdef void queue_push_ghost(Refiner r, double key, Index org, Index dest, Index v, Index rec, Index k) noexcept nogil
 cpdef bint ghost_room(Refiner r, Index n) noexcept nogil
-cpdef bint ghost_pending(Refiner r, Mesh m, Index g) noexcept nogil
-cpdef bint ghost_recent(Refiner r, Mesh m, Index g) noexcept nogil
 cpdef Index ghost_slot(Refiner r, Mesh m, Index g) noexcept nogil
 cpdef void ghost_revive(Refiner r, Index g, bint live) noexcept nogil
 cpdef void ghosts_orphaned(Refiner r, Mesh m) noexcept nogil
@@ -20,8 +25,22 @@ cpdef void entry_to_ghost(Refiner r, Index i, Index g) noexcept nogil
 
 
 # Defined here so that the kernels inline them (every bad triangle is
-# pushed, every step checks the room); queues.py repeats them for the
-# pure-Python mode.
+# pushed, every step checks the room, each insertion walks back over the
+# last ghost rows); queues.py repeats them for the pure-Python mode.
+
+cpdef inline bint ghost_pending(Refiner r, Mesh m, Index g) noexcept nogil:
+    # does ghost row g wait for its vertex (not made yet)?
+    return r.ghost[g, 0] >= 0 and r.ghost[g, 4] != GHOST_LIVE and r.ghost[g, 2] >= m.nvert
+
+
+cpdef inline bint ghost_recent(Refiner r, Mesh m, Index g) noexcept nogil:
+    # is ghost row g among the last rows, those that may wait for a vertex
+    # not made yet, or were made for one of the last vertices?  Rows are
+    # added as their entries are queued, for the next vertex made, and wait
+    # at most GHOST_DEFER vertices more: a walk back from the last row while
+    # this holds meets every row still waiting
+    return r.ghost[g, 2] >= m.nvert - GHOST_DEFER - 1
+
 
 cdef inline bint _bucketed(Refiner r) noexcept nogil:
     return r.cfg.strategy == TRIANGLE

@@ -34,14 +34,15 @@ from cython.cimports.instrument.refine.state import Refiner
 #: The bucket log marks a served entry so.
 POPPED = cython.declare(cython.longlong, -2)
 
-#: A ghost row's orientation once its vertex's insertion has revived it.
-GHOST_LIVE = cython.declare(cython.longlong, 9)
+if not cython.compiled:  # compiled, these are queues.pxd's
+    #: A ghost row's orientation once its vertex's insertion has revived it.
+    GHOST_LIVE = 9
 
-#: How many Chew deletions a ghost row may wait through (ghosts_orphaned):
-#: each puts its vertex one later.  The rows of the vertices made since
-#: are then the last ones, whose vertex is at most this many + 1 before
-#: the next (ghost_recent).
-GHOST_DEFER = cython.declare(cython.longlong, 2)
+    #: How many Chew deletions a ghost row may wait through (ghosts_orphaned):
+    #: each puts its vertex one later.  The rows of the vertices made since
+    #: are then the last ones, whose vertex is at most this many + 1 before
+    #: the next (ghost_recent).
+    GHOST_DEFER = 2
 
 
 @cython.ccall
@@ -227,26 +228,6 @@ def ghost_room(r: Refiner, n: Index) -> cython.bint:
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
-def ghost_pending(r: Refiner, m: Mesh, g: Index) -> cython.bint:
-    """Does ghost row ``g`` wait for its vertex (not made yet)?"""
-    return r.ghost[g, 0] >= 0 and r.ghost[g, 4] != GHOST_LIVE and r.ghost[g, 2] >= m.nvert
-
-
-@cython.ccall
-@cython.nogil
-@cython.exceptval(check=False)
-def ghost_recent(r: Refiner, m: Mesh, g: Index) -> cython.bint:
-    """Is ghost row ``g`` among the last rows, those that may wait for a
-    vertex not made yet, or were made for one of the last vertices?  Rows
-    are added as their entries are queued, for the next vertex made, and
-    wait at most GHOST_DEFER vertices more: a walk back from the last row
-    while this holds meets every row still waiting."""
-    return r.ghost[g, 2] >= m.nvert - GHOST_DEFER - 1
-
-
-@cython.ccall
-@cython.nogil
-@cython.exceptval(check=False)
 def ghost_slot(r: Refiner, m: Mesh, g: Index) -> Index:
     """The live triangle ghost row ``g`` matches now, or -1: the row was
     revived (its record holds the triangle again, ghosts.revive_ghosts) and
@@ -344,10 +325,23 @@ def ghosts_orphaned(r: Refiner, m: Mesh) -> cython.void:
         g -= 1
 
 
-# Pushing, and the room check: compiled, queues.pxd's inline definitions
-# (every bad triangle is pushed, every step checks the room); the same
+# Pushing, the room check and the ghost rows' walk: compiled, queues.pxd's
+# inline definitions (every bad triangle is pushed, every step checks the
+# room, each insertion walks back over the last ghost rows); the same
 # functions for the pure-Python mode.
 if not cython.compiled:
+
+    def ghost_pending(r: Refiner, m: Mesh, g: Index) -> bool:
+        """Does ghost row ``g`` wait for its vertex (not made yet)?"""
+        return r.ghost[g, 0] >= 0 and r.ghost[g, 4] != GHOST_LIVE and r.ghost[g, 2] >= m.nvert
+
+    def ghost_recent(r: Refiner, m: Mesh, g: Index) -> bool:
+        """Is ghost row ``g`` among the last rows, those that may wait for a
+        vertex not made yet, or were made for one of the last vertices?  Rows
+        are added as their entries are queued, for the next vertex made, and
+        wait at most GHOST_DEFER vertices more: a walk back from the last row
+        while this holds meets every row still waiting."""
+        return r.ghost[g, 2] >= m.nvert - GHOST_DEFER - 1
 
     def _bucketed(r: Refiner) -> bool:
         return r.cfg.strategy == TRIANGLE

@@ -566,14 +566,15 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
     # Triangle's records through the split: a rejected or deleted vertex's
     # queued triangles this vertex remakes (ghosts.py)
     records: cython.bint = False
+    revived: cython.bint = False
     if r.cfg.strategy == TRIANGLE:
         records = insertion_records(r, m, e, True, nb)
-        revive_ghosts(r, m, records, nb, m.twin[e] != NO_EDGE)
+        revived = revive_ghosts(r, m, records, nb, m.twin[e] != NO_EDGE)
     rec: Index = m.seg[e]
     half: Index = new_record(segs, segs.marker[rec], segs.source[rec], segs.ends[rec, 0], segs.ends[rec, 1])
     v: Index = new_vertex(m, px, py, V_SEGMENT, segs.marker[rec], e0, e1, e0, split, 0.0)
     fill_cavity(r, m, v, n, nb)
-    if r.nghost > 0:
+    if revived:
         ghosts_made(r, m, v)
     t: Index
     # the halves as edges on the side e was on, v -> d and o -> v, if the fan
@@ -627,13 +628,19 @@ def split_encroached(r: Refiner, m: Mesh, segs: Subsegments, triangles: cython.b
     status: cython.int
     fresh: Index
     ok: cython.bint
+    low: cython.bint
     while r.enc_live > 0 and r.budget != 0:
         # over the free slots to the next record, in a loop of its own: the
         # pool is mostly free slots, and each call scans it from the start
-        i = r.enc_cursor
+        # (from enc_low: la.poly under pq30 has three quarters of the slots
+        # a call would scan below its first record)
+        i = max(r.enc_cursor, r.enc_low)
+        low = i == r.enc_low
         fresh = r.enc_fresh
         while i < fresh and r.enc[i, 0] < 0:
             i += 1
+        if low:  # the first record
+            r.enc_low = i
         r.enc_cursor = i
         if i >= fresh:  # the next pass
             r.enc_cursor = 0
@@ -972,13 +979,14 @@ def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cyth
     # first was made can be served (a rejected point's wait for the next),
     # so each run of rejections ends, and vertices are bounded as before.
     records: cython.bint = False
+    revived: cython.bint = False
     if r.cfg.strategy == TRIANGLE:
         records = insertion_records(r, m, e, status == LOC_ON_EDGE, nb)
-        revive_ghosts(r, m, records, nb, status != LOC_ON_EDGE or m.twin[e] != NO_EDGE)
+        revived = revive_ghosts(r, m, records, nb, status != LOC_ON_EDGE or m.twin[e] != NO_EDGE)
     # attributes: barycentric in (org, dest, apex)
     v: Index = new_vertex(m, px, py, V_FREE, 0, b, c, a, xi, eta)
     fill_cavity(r, m, v, n, nb)
-    if r.nghost > 0:
+    if revived:
         ghosts_made(r, m, v)
     m.work[C_STEINER] += 1
     if r.budget > 0:

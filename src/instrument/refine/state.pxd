@@ -62,6 +62,7 @@ cdef class Refiner:
     cdef public Index enc_fresh      # slots ever used
     cdef public Index enc_free       # last freed slot, -1 none (freed slots chain through column 1)
     cdef public Index enc_cursor     # the slot the current pass is at
+    cdef public Index enc_low        # no record lies below this slot (a pass starts here, not at 0)
     cdef public bint enc_busy        # a pass is under way (resume at enc_cursor)
     cdef public Index acute_slot     # the pool record whose ends' flags ``acute`` holds (-1 none)
     cdef public int acute            # its ends next to another subsegment as it was pooled: 1 org, 2 dest

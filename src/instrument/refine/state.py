@@ -126,6 +126,7 @@ class Refiner:
         self.enc_fresh = 0
         self.enc_free = -1
         self.enc_cursor = 0
+        self.enc_low = 0
         self.enc_busy = False
         self.acute_slot = -1
         self.acute = 0
