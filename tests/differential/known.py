@@ -16,7 +16,6 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
-from fractions import Fraction
 
 import numpy as np
 
@@ -208,34 +207,7 @@ DEFECTS += [
     ),
 ]
 
-def _segment_through_input_vertex(case: Case) -> bool:
-    """Some input segment passes exactly through an input vertex between its ends."""
-    v = np.asarray(case.input.get("vertices", ()), dtype=float).reshape(-1, 2)
-    segs = np.asarray(case.input.get("segments", ()), dtype=np.int64).reshape(-1, 2)
-    exact = [tuple(map(Fraction, p)) for p in v.tolist()]
-    for a, b in segs.tolist():
-        (ax, ay), (bx, by) = exact[a], exact[b]
-        for k, (px, py) in enumerate(exact):
-            if k in (a, b) or (bx - ax) * (py - ay) != (by - ay) * (px - ax):
-                continue
-            if 0 < (px - ax) * (bx - ax) + (py - ay) * (by - ay) < (bx - ax) ** 2 + (by - ay) ** 2:
-                return True
-    return False
-
-
 DEFECTS += [
-    Defect(
-        "through-vertex-after-crossing",
-        "A segment passing exactly through an input vertex that other segments cross first (campaign seed 3101, "
-        "crossing-segments, 14 vertices under znqDpQ, the one new failure of 3,800 cases at f821465): the segment "
-        "(0.50017, 0.50000954)-(1.49983, 1.49999905) passes exactly through the square's corner (1, 1); under pQ "
-        "Triangle makes 18 vertices and 1 triangle, ours 19 and 3, both valid, and under pDQ 18 / 1 against 23 / "
-        "8. Segment recovery decides differently whether the piece from a crossing still holds (1, 1) (the rule "
-        "of crossing-30: an input vertex is on a piece only when exactly on it; tests/engine/"
-        "test_segment_through_vertex.py); not traced yet (tests/differential/open/through-vertex-after-crossing.json)",
-        lambda c, f, n: (c.family == "crossing-segments" and f.kind in ("count", "markers", "area-total", "size")
-                         and _segment_through_input_vertex(c)),
-    ),
     Defect(
         "sliver-hull-limit-slow",
         "Six points within rounding of a line (near-collinear-chain, a chain of 5 segments) under pq34a0.000899cvi "
