@@ -1061,9 +1061,9 @@ def _flips_start_past(m: Mesh, a: Index, b: Index, end: Index, sa: Index, sb: In
         return False
     xy = m.xy
     m.work[C_ORIENT] += 2
-    sb_: cython.double = orient2d(xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[end, 0], xy[end, 1])
-    sf: cython.double = orient2d(xy[a, 0], xy[a, 1], xy[f, 0], xy[f, 1], xy[end, 0], xy[end, 1])
-    return (sb_ > 0.0 and sf < 0.0) or (sb_ < 0.0 and sf > 0.0)
+    s_piece: cython.double = orient2d(xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[end, 0], xy[end, 1])
+    s_far: cython.double = orient2d(xy[a, 0], xy[a, 1], xy[f, 0], xy[f, 1], xy[end, 0], xy[end, 1])
+    return (s_piece > 0.0 and s_far < 0.0) or (s_piece < 0.0 and s_far > 0.0)
 
 
 @cython.cfunc
