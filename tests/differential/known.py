@@ -16,6 +16,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
+from fractions import Fraction
 
 import numpy as np
 
@@ -216,7 +217,37 @@ DEFECTS += [
     ),
 ]
 
+def _segment_through_input_vertex(case: Case) -> bool:
+    """Some input segment passes exactly through an input vertex between its ends."""
+    v = np.asarray(case.input.get("vertices", ()), dtype=float).reshape(-1, 2)
+    segs = np.asarray(case.input.get("segments", ()), dtype=np.int64).reshape(-1, 2)
+    exact = [tuple(map(Fraction, p)) for p in v.tolist()]
+    for a, b in segs.tolist():
+        (ax, ay), (bx, by) = exact[a], exact[b]
+        for k, (px, py) in enumerate(exact):
+            if k in (a, b) or (bx - ax) * (py - ay) != (by - ay) * (px - ax):
+                continue
+            if 0 < (px - ax) * (bx - ax) + (py - ay) * (by - ay) < (bx - ax) ** 2 + (by - ay) ** 2:
+                return True
+    return False
+
+
 DEFECTS += [
+    Defect(
+        "through-vertex-after-crossing",
+        "A segment passing exactly through an input vertex that other segments cross first (crossing-segments). "
+        "Its first case (campaign seed 3101, 14 vertices under znqDpQ; "
+        "regressions/through-vertex-after-crossing.json) was traced at stop 32 and passes: not the segment "
+        "through the square's corner but a piece of another segment, crossed near its far end and then passing "
+        "4e-17 beside the end of a third segment, where Triangle's flips start past that end and fold its mesh "
+        "(segments/recover._flips_start_past; tests/engine/test_beside_vertex_after_crossing.py). Left, not "
+        "traced: two cases of a 400-case crossing-segments campaign of seed 3101 at stop 32, failures this "
+        "matcher explained before and that the old kernels make too: 81 vertices under po2niQ where ours makes "
+        "77 (regressions/through-vertex-after-crossing-count.json), and one vertex marker 1 fewer than "
+        "Triangle's under zipQ, 29 vertices each (regressions/through-vertex-after-crossing-markers.json)",
+        lambda c, f, n: (c.family == "crossing-segments" and f.kind in ("count", "markers", "area-total", "size")
+                         and _segment_through_input_vertex(c)),
+    ),
     Defect(
         "sliver-hull-limit-slow",
         "Six points within rounding of a line (near-collinear-chain, a chain of 5 segments) under pq34a0.000899cvi "

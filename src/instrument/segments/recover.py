@@ -1048,8 +1048,9 @@ def _flips_start_past(m: Mesh, a: Index, b: Index, end: Index, sa: Index, sb: In
     subsegment, and leave a fold at ``end`` (campaign seed 3101: the piece
     (-0.268, 0.677) -> (0.119, 0.0150) passes 4e-17 beside the end (0.0238,
     0.178) of a segment it crosses; Triangle's pcQ mesh has the clockwise
-    triangle of the two and no vertex there).  Ours takes ``end`` on the
-    piece, which keeps Triangle's vertices and a valid mesh."""
+    triangle (``end``, ``a``, ``b``) and no vertex on that segment).  Ours
+    takes ``end`` on the piece, which keeps Triangle's vertices and a valid
+    mesh."""
     f: Index
     if a == sa and sb >= 0:
         f = sb
