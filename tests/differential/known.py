@@ -169,7 +169,16 @@ DEFECTS += [
         "...208, and the runs part: 758 vertices against 781 (bound 776.2; Triangle's re-expressions "
         "758..492). Without _bent_away (an experiment) ours follows Triangle through point 316 and parts at "
         "317, where Triangle's split point folds its mesh (-S317: a clockwise triangle, repaired by point 318) "
-        "and ours moves the point to the next double across the line (_across_line): 774 vertices",
+        "and ours moves the point to the next double across the line (_across_line): 774 vertices. Stop 32's "
+        "experiment (_bent_away returning -1 always): this case passes the harness (774 vertices, valid), the "
+        "golden check is unchanged (0 of 450 differ: _bent_away never acts there) and 600 crossing-segments and "
+        "near-collinear-chain cases of seed 3031 show no failure of refinement (their one failure, an invalid mesh "
+        "under pQ, is the same with it), but two regressions break: "
+        "near-collinear-chain-split-bent.json under pucS19njQ makes a mesh the exact checker rejects (edge "
+        "{3, 23} not locally Delaunay: vertex 5 inside the circle of its other triangle, as Triangle's -S306 "
+        "mesh here), near-collinear-chain-split-folds.json raises PrecisionError where Triangle meshes (the fan "
+        "folds), and tests/engine/test_split_bent.py fails at all three scales. Following Triangle there does "
+        "not keep every mesh valid: _bent_away stays",
         lambda c, f, n: (f.kind == "size" and c.family == "crossing-segments" and read_switches(c.switches).D
                          and read_switches(c.switches).q
                          and n.get("vertices", {}).get("ours", 0) <= 1.05 * n.get("size_bound", 0)),
@@ -232,13 +241,16 @@ def _segment_through_input_vertex(case: Case) -> bool:
 DEFECTS += [
     Defect(
         "through-vertex-after-crossing",
-        "A segment passing exactly through an input vertex that other segments cross first (campaign seed 3101, "
-        "crossing-segments, 14 vertices under znqDpQ, the one new failure of 3,800 cases at f821465): the segment "
-        "(0.50017, 0.50000954)-(1.49983, 1.49999905) passes exactly through the square's corner (1, 1); under pQ "
-        "Triangle makes 18 vertices and 1 triangle, ours 19 and 3, both valid, and under pDQ 18 / 1 against 23 / "
-        "8. Segment recovery decides differently whether the piece from a crossing still holds (1, 1) (the rule "
-        "of crossing-30: an input vertex is on a piece only when exactly on it; tests/engine/"
-        "test_segment_through_vertex.py); not traced yet (tests/differential/open/through-vertex-after-crossing.json)",
+        "A segment passing exactly through an input vertex that other segments cross first (crossing-segments). "
+        "Its first case (campaign seed 3101, 14 vertices under znqDpQ; "
+        "regressions/through-vertex-after-crossing.json) was traced at stop 32 and passes: not the segment "
+        "through the square's corner but a piece of another segment, crossed near its far end and then passing "
+        "4e-17 beside the end of a third segment, where Triangle's flips start past that end and fold its mesh "
+        "(segments/recover._flips_start_past; tests/engine/test_beside_vertex_after_crossing.py). Left, not "
+        "traced: two cases of a 400-case crossing-segments campaign of seed 3101 at stop 32, failures this "
+        "matcher explained before and that the old kernels make too: 81 vertices under po2niQ where ours makes "
+        "77 (regressions/through-vertex-after-crossing-count.json), and one vertex marker 1 fewer than "
+        "Triangle's under zipQ, 29 vertices each (regressions/through-vertex-after-crossing-markers.json)",
         lambda c, f, n: (c.family == "crossing-segments" and f.kind in ("count", "markers", "area-total", "size")
                          and _segment_through_input_vertex(c)),
     ),

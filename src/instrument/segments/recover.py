@@ -467,12 +467,14 @@ def _recover(
                 fuzzy = True
                 _place_crossing(m, segs, m.seg[c], m.nvert, csx, csy, m.corner[lnext(c)], m.corner[lprev(c)], ct)
                 copied = True
-            elif y >= 0 and not _beside_splits(m, a, c, y, csx, csy):
+            elif y >= 0 and (not _beside_splits(m, a, c, y, csx, csy) or _flips_start_past(m, a, b, y, sa, sb)):
                 # a crossing beside that end where Triangle's point would not
                 # split c cleanly: _split_at_crossing takes the end itself,
                 # and the piece goes to it the same way (after Triangle's
                 # flips their pocket would wait for a vertex on the piece,
-                # and none comes: regressions/crossing-beside-an-end-fold.json)
+                # and none comes: regressions/crossing-beside-an-end-fold.json);
+                # or where Triangle's flips start on the far side of that end
+                # and never meet c (regressions/through-vertex-after-crossing.json)
                 end = y
                 fuzzy = True
                 taken = True
@@ -1026,6 +1028,43 @@ def _beside_splits(
     m.work[C_ORIENT] += 2
     return (orient2d(sx, sy, xy[left, 0], xy[left, 1], xy[a, 0], xy[a, 1]) > 0.0
             and orient2d(xy[a, 0], xy[a, 1], xy[right, 0], xy[right, 1], sx, sy) > 0.0)
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _flips_start_past(m: Mesh, a: Index, b: Index, end: Index, sa: Index, sb: Index) -> cython.bint:
+    """Do Triangle's flips for the piece ``a -> b`` start on the far side of
+    input vertex ``end``, a neighbour of ``a`` that the piece passes within
+    rounding (the walk met a subsegment of ``end``'s beside it)?
+
+    The piece is what is left of its input segment ``a -> f`` after the
+    segment was met from ``f``'s side (a crossing there, or a vertex on it):
+    Triangle turned around ``a`` towards ``f`` first, found no subsegment
+    facing it, and recovers the rest from that triangle, towards ``b`` now.
+    Where ``end`` lies strictly between the rays ``a -> b`` and ``a -> f``,
+    the edge ``a end`` parts that triangle from the one the piece leaves
+    ``a`` through: the flips go round ``end`` on ``f``'s side, never meet its
+    subsegment, and leave a fold at ``end`` (campaign seed 3101: the piece
+    (-0.268, 0.677) -> (0.119, 0.0150) passes 4e-17 beside the end (0.0238,
+    0.178) of a segment it crosses; Triangle's pcQ mesh has the clockwise
+    triangle (``end``, ``a``, ``b``) and no vertex on that segment).  Ours
+    takes ``end`` on the piece, which keeps Triangle's vertices and a valid
+    mesh."""
+    f: Index
+    if a == sa and sb >= 0:
+        f = sb
+    elif a == sb and sa >= 0:
+        f = sa
+    else:
+        return False
+    if b == f or (find_edge(m, a, end) < 0 and find_edge(m, end, a) < 0):
+        return False
+    xy = m.xy
+    m.work[C_ORIENT] += 2
+    s_piece: cython.double = orient2d(xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[end, 0], xy[end, 1])
+    s_far: cython.double = orient2d(xy[a, 0], xy[a, 1], xy[f, 0], xy[f, 1], xy[end, 0], xy[end, 1])
+    return (s_piece > 0.0 and s_far < 0.0) or (s_piece < 0.0 and s_far > 0.0)
 
 
 @cython.cfunc
