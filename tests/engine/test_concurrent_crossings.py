@@ -3,9 +3,10 @@
 Five segments, the last three of which end at, or pass through, the
 crossing of two others computed in doubles, moved by up to 2 ulps (the
 concurrent-segments family of tests/differential/families.py; found by a
-sweep of 1,500 such inputs at stop 32).  Triangle crashes on each of them;
-ours raised "could not recover segment" and now makes a mesh that passes
-the exact checker under every switch string the sweep used.
+sweep of 1,500 such inputs at stop 32).  Triangle crashes on the first
+three; ours raised "could not recover segment" (the fourth: a folded mesh)
+and now makes a mesh that passes the exact checker under every switch
+string the sweep used.
 
 - ``_THROUGH_AN_END``: a piece starting at the crossing beside an input end
   took, within rounding, the crossing vertex of two other segments two ulps
@@ -18,6 +19,12 @@ the exact checker under every switch string the sweep used.
   and the crossing vertex, on the pocket's side of it, folded the mesh
   (recover._near_crossed: the piece goes to that end by exact flips, and
   the crossing is that end).
+- ``_PAST_THE_SUBSEGMENT``: two input ends 7 ulps apart on either side of the
+  crossing; the second segment's halves through the crossing passed one of
+  them on the other side than the segment itself, beside the pocket
+  Triangle's flips left there, and the mesh folded ("segments cross at
+  points too close together"; Triangle meshes it, 11 vertices, ours 10:
+  the one crossing is that end).
 """
 
 from __future__ import annotations
@@ -50,6 +57,14 @@ _BESIDE_THE_CROSSING_1E100 = [
     ("0x1.adc364f327f20p+331", "0x1.ab21bba1ace4fp+330"), ("0x1.e82212e0c17d5p+330", "0x1.24c55aca3b069p+331"),
 ]
 
+_PAST_THE_SUBSEGMENT = [
+    ("0x1.51c510de9ba10p-3", "0x1.8000000000000p-4"), ("0x1.cf96863c0ff50p-2", "0x1.e1bcbd4eebc8ap-2"),
+    ("0x1.7000000000000p-1", "0x1.7000000000000p-1"), ("0x1.54a8825ed050cp-1", "0x1.b561178098922p-1"),
+    ("0x1.62b3bc975abadp-1", "0x1.91be430363816p-1"), ("0x1.74f2989d43caep-1", "0x1.fa96861d7939bp-1"),
+    ("0x1.12fb357ed8f20p-3", "0x1.56225ff37f6a0p-3"), ("0x1.405455e77f9c9p+0", "0x1.66f9f704f393ep+0"),
+    ("0x1.62b3bc975abadp-1", "0x1.91be43036380fp-1"), ("0x1.a000000000000p-3", "0x1.d5a3fe8b3b2f8p-3"),
+]
+
 
 def _input(points) -> dict:
     return {"vertices": np.array([[float.fromhex(x), float.fromhex(y)] for x, y in points]),
@@ -57,8 +72,9 @@ def _input(points) -> dict:
 
 
 @pytest.mark.parametrize("switches", ["pQ", "pcQ", "pjQ", "pDQ"])
-@pytest.mark.parametrize("points", [_THROUGH_AN_END, _BESIDE_THE_CROSSING, _BESIDE_THE_CROSSING_1E100],
-                         ids=["through-an-end", "beside-the-crossing", "beside-the-crossing-1e100"])
+@pytest.mark.parametrize("points", [_THROUGH_AN_END, _BESIDE_THE_CROSSING, _BESIDE_THE_CROSSING_1E100,
+                                    _PAST_THE_SUBSEGMENT],
+                         ids=["through-an-end", "beside-the-crossing", "beside-the-crossing-1e100", "past-the-subsegment"])
 def test_concurrent_segments_are_recovered(points, switches):
     inp = _input(points)
     out = instrument.triangulate(inp, switches)

@@ -611,14 +611,33 @@ def _near_crossed(
             )
             scouted = True
         side = -1.0 if i % 2 == 0 else 1.0
-        m.work[C_ORIENT] += 1
-        if side * orient2d(xy[a, 0], xy[a, 1], px, py, xy[v, 0], xy[v, 1]) <= 0.0:
+        if _side_changes(m, a, right, left, v, side, px, py):
             return v
-        if t >= 0.0:
-            m.work[C_ORIENT] += 1
-            if side * orient2d(xy[a, 0], xy[a, 1], sx, sy, xy[v, 0], xy[v, 1]) <= 0.0:
-                return v
+        if t >= 0.0 and _side_changes(m, a, right, left, v, side, sx, sy):
+            return v
     return -1
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _side_changes(
+    m: Mesh, a: Index, right: Index, left: Index, v: Index, side: cython.double, px: cython.double,
+    py: cython.double,
+) -> cython.bint:
+    """Does vertex ``v``, on ``side`` of the piece from ``a`` (-1 right, 1
+    left), lie on the line from ``a`` to the crossing ``p`` or beyond it, or
+    do the two halves of the subsegment right -> left split at ``p`` pass
+    it on another side than the subsegment does?"""
+    xy = m.xy
+    m.work[C_ORIENT] += 1
+    if side * orient2d(xy[a, 0], xy[a, 1], px, py, xy[v, 0], xy[v, 1]) <= 0.0:
+        return True
+    m.work[C_ORIENT] += 3
+    s: cython.double = orient2d(xy[right, 0], xy[right, 1], xy[left, 0], xy[left, 1], xy[v, 0], xy[v, 1])
+    s1: cython.double = orient2d(xy[right, 0], xy[right, 1], px, py, xy[v, 0], xy[v, 1])
+    s2: cython.double = orient2d(px, py, xy[left, 0], xy[left, 1], xy[v, 0], xy[v, 1])
+    return (s > 0.0) != (s1 > 0.0) or (s < 0.0) != (s1 < 0.0) or (s > 0.0) != (s2 > 0.0) or (s < 0.0) != (s2 < 0.0)
 
 
 @cython.cfunc
