@@ -498,14 +498,13 @@ def _recover(
                 taken = True
             elif y < 0:
                 # a vertex the walk passed within rounding of the crossing
-                # (and of no end of c): the crossing is that vertex, as
+                # (and of no end of c) that the crossing would put on its
+                # wrong side (_near_crossed): the crossing is that vertex, as
                 # _split_at_crossing takes a vertex near it, and the piece
-                # goes to it by exact flips (_crossed_exactly).  After
-                # Triangle's flips the pocket beside it would wait for a
-                # vertex on c on its far side, and the one that comes, an
-                # ulp from it, can lie on its near side: the mesh folds
-                # (campaign sweep: the third of three segments within 2 ulps
-                # of one point ends there; Triangle crashes)
+                # goes to it by exact flips.  After Triangle's flips the
+                # pocket beside it would wait for a vertex on its far side,
+                # and the one that comes, an ulp from it, lies on its near
+                # side: the mesh folds (tests/engine/test_concurrent_crossings.py)
                 y = _near_crossed(m, a, b, c, qr, ql, nq, px, py, tol)
                 if y >= 0:
                     end = y
@@ -584,14 +583,15 @@ def _near_crossed(
     """The first vertex of the ``nq`` queued edges (crossed by the piece
     ``a b`` before it meets subsegment edge ``c``; ``qr`` right of the
     piece, ``ql`` left) within ``tol`` of the crossing ``(px, py)``, other
-    than ``a``, ``b`` and the ends of ``c``, that lies on the line from
-    ``a`` to the crossing, or on its other side, for the crossing rounded
-    once or Triangle's (``scouted_crossing``); -1 if there is none.
+    than ``a``, ``b`` and the ends of ``c``, whose side the crossing
+    changes (``_side_changes``), for the crossing rounded once or
+    Triangle's (``scouted_crossing``); -1 if there is none.
 
     Triangle's flips leave the pocket on that vertex's side waiting for a
-    vertex on the piece, and one beyond it, on the line ``a`` to it, can
-    only fold the mesh.  A vertex as near that stays on its side is
-    passed by, as Triangle passes it (its own crossing vertex beside it)."""
+    vertex on the piece, and one that puts it on the line from ``a`` or
+    past it, or across the halves of ``c``, can only fold the mesh.  A
+    vertex as near whose sides stay is passed by, as Triangle passes it
+    (its own crossing vertex beside it)."""
     xy = m.xy
     right: Index = m.corner[lnext(c)]
     left: Index = m.corner[lprev(c)]
