@@ -258,19 +258,14 @@ def _ahead(xy: cython.double[:, ::1], a: Index, b: Index, v: Index) -> cython.bi
     is not on the segment: with the tolerance it can look collinear while
     both ``a b`` and ``a v`` are edges (the guitar outline: taking it marked
     an edge that is no segment and left the segment's own edge unmarked).
-    Compared along the line's dominant axis, with no arithmetic that could
-    overflow (a dot product of differences near 2^512 does)."""
+    Decided by its exact projection on the line (``_within_subsegment``), as
+    the checker decides which vertices a segment's chain passes: compared
+    along the line's dominant axis, a crossing vertex an ulp beside ``a``
+    was ahead while its projection lies behind ``a``, and the piece ``a v``
+    left the segment's chain (regressions/concurrent-crossings-end-chain.json)."""
     if v == b:
         return True
-    ax: cython.double = xy[a, 0]
-    bx: cython.double = xy[b, 0]
-    vx: cython.double = xy[v, 0]
-    ay: cython.double = xy[a, 1]
-    by: cython.double = xy[b, 1]
-    vy: cython.double = xy[v, 1]
-    if fabs(0.5 * bx - 0.5 * ax) >= fabs(0.5 * by - 0.5 * ay):
-        return (ax < vx < bx) or (bx < vx < ax)
-    return (ay < vy < by) or (by < vy < ay)
+    return _within_subsegment(xy, a, b, xy[v, 0], xy[v, 1])
 
 
 @cython.cfunc
@@ -328,6 +323,25 @@ def _turn_to_edge(m: Mesh, b: Index, e0: Index, plain: Index) -> tuple[Index, cy
     return -1, -1
 
 
+@cython.cfunc
+@cython.inline
+@cython.nogil
+@cython.exceptval(check=False)
+def _behind_side(m: Mesh, a: Index, b: Index, v: Index) -> cython.double:
+    """The exact orientation of ``v`` against ``a -> b``, for a vertex that
+    ``_side`` takes to be on the line but that lies behind ``a`` (or past
+    ``b``): it cannot be on the piece, so its wedge is decided exactly.
+    With ``_side``'s 0 the turn skipped the one triangle whose wedge at
+    ``a`` holds the piece's direction, and found none: a crossing vertex a
+    few ulps from ``a`` is within rounding of every line through ``a``,
+    whatever its direction (regressions/concurrent-crossings-recovery-error.json:
+    segment 2 ends within 2 ulps of the crossing of segments 0 and 1, which
+    lies below its end, its direction to the upper right)."""
+    xy = m.xy
+    m.work[C_ORIENT] += 1
+    return orient2d(xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[v, 0], xy[v, 1])
+
+
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
@@ -364,6 +378,12 @@ def turn_to(m: Mesh, a: Index, b: Index, e0: Index, plain: Index, sa: Index, sb:
                 return e, 1
             if ox == 0.0 and _ahead(xy, a, b, x):
                 return e, 2
+            # a corner on the line but not ahead is not on the piece: where the
+            # other corner's side makes the wedge a candidate, its exact side
+            if od == 0.0 and ox < 0.0:
+                od = -_behind_side(m, a, b, d)
+            elif ox == 0.0 and od > 0.0:
+                ox = -_behind_side(m, a, b, x)
             if od > 0.0 and ox < 0.0:
                 return e, 0
             nxt = _next_around(m, e, direction)
@@ -478,6 +498,19 @@ def _recover(
                 end = y
                 fuzzy = True
                 taken = True
+            elif y < 0:
+                # a vertex the walk passed within rounding of the crossing
+                # (and of no end of c) that the crossing would put on its
+                # wrong side (_near_crossed): the crossing is that vertex, as
+                # _split_at_crossing takes a vertex near it, and the piece
+                # goes to it by exact flips.  After Triangle's flips the
+                # pocket beside it would wait for a vertex on its far side,
+                # and the one that comes, an ulp from it, lies on its near
+                # side: the mesh folds (tests/engine/test_concurrent_crossings.py)
+                y = _near_crossed(m, a, b, c, qr, ql, nq, px, py, tol)
+                if y >= 0:
+                    end = y
+                    fuzzy = True
             break
         tw = m.twin[c]
         if tw == NO_EDGE:
@@ -512,7 +545,20 @@ def _recover(
         return (_PIECE_DONE if end == b else _PIECE_CONTINUES), end, -1
     if copied or taken:  # the edges a -> b crossed that a -> end crosses too (not those at end)
         nq = _crossing_only(m, a, end, qr, ql, nq)
-    if not _flip_out(m, a, end, qr, ql, nq, n, stack):
+    flipped: cython.bint = _flip_out(m, a, end, qr, ql, nq, n, stack)
+    if not (copied or taken) and not (flipped and (find_edge(m, a, end) >= 0 or find_edge(m, end, a) >= 0)):
+        # end is within rounding of the piece's line only, and the walk's
+        # edges were not those that a -> end crosses: those, exactly, in the
+        # mesh the flips left (a triangulation still, Delaunay again first)
+        if flipped and not restore_delaunay(m, stack):
+            return _PIECE_FAILED, -1, -1
+        end, nq = _crossed_exactly(m, a, end, qr, ql, n)
+        if nq == -2:
+            return _PIECE_BUFFER, -1, -1
+        if nq < 0:
+            return _PIECE_FAILED, -1, -1
+        flipped = _flip_out(m, a, end, qr, ql, nq, n, stack)
+    if not flipped:
         return _PIECE_FAILED, -1, -1
     e = find_edge(m, a, end)
     if e >= 0:
@@ -527,6 +573,131 @@ def _recover(
     if copied:
         return _PIECE_COPIED, end, -1
     return (_PIECE_DONE if end == b else _PIECE_CONTINUES), end, -1
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _near_crossed(
+    m: Mesh, a: Index, b: Index, c: Index, qr: cython.longlong[::1], ql: cython.longlong[::1], nq: Index,
+    px: cython.double, py: cython.double, tol: cython.double,
+) -> Index:
+    """The first vertex of the ``nq`` queued edges (crossed by the piece
+    ``a b`` before it meets subsegment edge ``c``; ``qr`` right of the
+    piece, ``ql`` left) within ``tol`` of the crossing ``(px, py)``, other
+    than ``a``, ``b`` and the ends of ``c``, whose side the crossing
+    changes (``_side_changes``), for the crossing rounded once or
+    Triangle's (``scouted_crossing``); -1 if there is none.
+
+    Triangle's flips leave the pocket on that vertex's side waiting for a
+    vertex on the piece, and one that puts it on the line from ``a`` or
+    past it, or across the halves of ``c``, can only fold the mesh.  A
+    vertex as near whose sides stay is passed by, as Triangle passes it
+    (its own crossing vertex beside it)."""
+    xy = m.xy
+    right: Index = m.corner[lnext(c)]
+    left: Index = m.corner[lprev(c)]
+    v: Index
+    side: cython.double
+    t: cython.double = -1.0
+    sx: cython.double = 0.0
+    sy: cython.double = 0.0
+    scouted: cython.bint = False
+    for i in range(2 * nq):
+        v = qr[i // 2] if i % 2 == 0 else ql[i // 2]
+        if v == a or v == b or v == right or v == left or not _near(xy, v, px, py, tol):
+            continue
+        if not scouted:
+            t, sx, sy = scouted_crossing(
+                xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[right, 0], xy[right, 1], xy[left, 0], xy[left, 1]
+            )
+            scouted = True
+        side = -1.0 if i % 2 == 0 else 1.0
+        if _side_changes(m, a, right, left, v, side, px, py):
+            return v
+        if t >= 0.0 and _side_changes(m, a, right, left, v, side, sx, sy):
+            return v
+    return -1
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _side_changes(
+    m: Mesh, a: Index, right: Index, left: Index, v: Index, side: cython.double, px: cython.double,
+    py: cython.double,
+) -> cython.bint:
+    """Does vertex ``v``, on ``side`` of the piece from ``a`` (-1 right, 1
+    left), lie on the line from ``a`` to the crossing ``p`` or beyond it, or
+    do the two halves of the subsegment right -> left split at ``p`` pass
+    it on another side than the subsegment does?"""
+    xy = m.xy
+    m.work[C_ORIENT] += 1
+    if side * orient2d(xy[a, 0], xy[a, 1], px, py, xy[v, 0], xy[v, 1]) <= 0.0:
+        return True
+    m.work[C_ORIENT] += 3
+    s: cython.double = orient2d(xy[right, 0], xy[right, 1], xy[left, 0], xy[left, 1], xy[v, 0], xy[v, 1])
+    s1: cython.double = orient2d(xy[right, 0], xy[right, 1], px, py, xy[v, 0], xy[v, 1])
+    s2: cython.double = orient2d(px, py, xy[left, 0], xy[left, 1], xy[v, 0], xy[v, 1])
+    return (s > 0.0) != (s1 > 0.0) or (s < 0.0) != (s1 < 0.0) or (s > 0.0) != (s2 > 0.0) or (s < 0.0) != (s2 < 0.0)
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _crossed_exactly(
+    m: Mesh, a: Index, end: Index, qr: cython.longlong[::1], ql: cython.longlong[::1], n: Index,
+) -> tuple[Index, Index]:
+    """``(v, nq)``: the edges (vertex pairs, right -> left, in order from
+    ``a``) that the segment ``a end`` crosses, exactly, queued in ``qr``,
+    ``ql`` (room for ``n``), up to ``v``: ``end``, or the first vertex
+    exactly on the segment between its ends (the piece goes through it).
+    ``nq = -1`` where that segment meets a subsegment or the boundary
+    first (or the turn finds no triangle), -2 where the queue is too short.
+
+    The walk along ``a -> b`` took ``end`` within rounding of that line
+    only, and its crossed edges are not those of ``a end`` where ``end``
+    lies near ``a``: a vertex a few ulps away is within rounding of every
+    line through ``a``, whatever its direction, and Sloan's flips cannot
+    recover a segment from edges it does not cross (campaign sweep: three
+    segments within 2 ulps of one point, the third's piece from its
+    crossing beside one end to the crossing of the other two, which lies
+    behind that end exactly on their line)."""
+    e0: Index = vertex_edge(m, a)
+    if e0 < 0:
+        return end, -1
+    e: Index
+    where: cython.int
+    e, where = turn_to(m, a, end, e0, m.nvert, -1, -1)  # every vertex below "plain": exact
+    if e < 0:
+        return end, -1
+    if where == 1:
+        return m.corner[lprev(e)], 0
+    if where == 2:
+        return m.corner[e], 0
+    xy = m.xy
+    nq: Index = 0
+    c: Index = lnext(e)
+    tw: Index
+    y: Index
+    s: cython.double
+    while True:
+        tw = m.twin[c]
+        if m.seg[c] != NO_SEG or tw == NO_EDGE:
+            return end, -1
+        if nq >= n:
+            return end, -2
+        qr[nq] = m.corner[lnext(c)]
+        ql[nq] = m.corner[lprev(c)]
+        nq += 1
+        y = m.corner[tw]
+        if y == end:
+            return end, nq
+        m.work[C_ORIENT] += 1
+        s = orient2d(xy[a, 0], xy[a, 1], xy[end, 0], xy[end, 1], xy[y, 0], xy[y, 1])
+        if s == 0.0:
+            return y, nq
+        c = lnext(tw) if s > 0.0 else lprev(tw)
 
 
 @cython.cfunc
