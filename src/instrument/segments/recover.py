@@ -1246,19 +1246,26 @@ def _beside_end(
 ) -> tuple[Index, cython.double, cython.double, cython.double]:
     """``(E, t, sx, sy)``: where segment ``a b`` (walked from ``a``) crosses
     subsegment edge ``c`` within rounding of an input vertex ``E`` ending
-    ``c``, and of no end of ``a b``, that vertex, with Triangle's crossing
-    (``scouted_crossing``: t along ``c``, the point s); ``E = -1`` elsewhere.
-    "Within rounding" is ``tol`` about the exact crossing rounded once,
-    ``(px, py)`` (``_rounded_crossing``'s)."""
+    ``c``, that vertex, with Triangle's crossing (``scouted_crossing``: t
+    along ``c``, the point s); ``E = -1`` elsewhere.  "Within rounding" is
+    ``tol`` about the exact crossing rounded once, ``(px, py)``
+    (``_rounded_crossing``'s).  Where the crossing is within rounding of an
+    end of ``a b`` too, only if s lies strictly inside ``a b`` (exactly,
+    along it), so that ``a b``'s chain through s goes forward.  Else E, an
+    ulp beside that end and off ``a b``'s line, was taken onto ``a b``
+    where Triangle puts its own crossing vertex, and refinement split the
+    piece between the two, an ulp long, at a midpoint behind the end
+    (regressions/concurrent-crossings-invalid-pdq.json)."""
     xy = m.xy
     left: Index = m.corner[lprev(c)]
     right: Index = m.corner[lnext(c)]
     near_right: cython.bint = _near(xy, right, px, py, tol)
     near_left: cython.bint = _near(xy, left, px, py, tol)
+    near_piece: cython.bint = _near(xy, a, px, py, tol) or _near(xy, b, px, py, tol)
     t: cython.double
     sx: cython.double
     sy: cython.double
-    if near_right == near_left or _near(xy, a, px, py, tol) or _near(xy, b, px, py, tol):
+    if near_right == near_left:
         return -1, -1.0, 0.0, 0.0
     end: Index = right if near_right else left
     if end >= plain:
@@ -1266,7 +1273,7 @@ def _beside_end(
     t, sx, sy = scouted_crossing(
         xy[a, 0], xy[a, 1], xy[b, 0], xy[b, 1], xy[right, 0], xy[right, 1], xy[left, 0], xy[left, 1]
     )
-    if t < 0.0:
+    if t < 0.0 or (near_piece and not _within_subsegment(xy, a, b, sx, sy)):
         return -1, -1.0, 0.0, 0.0
     return end, t, sx, sy
 
