@@ -484,16 +484,11 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
     status: cython.int
     cornered: cython.bint = (px == m.xy[o, 0] and py == m.xy[o, 1]) or (px == m.xy[d, 0] and py == m.xy[d, 1])
     loose: cython.bint = cornered or r.cfg.angle_test
-    # an apex on the subsegment's line takes the split, unless a split of
-    # another segment made it: Triangle splits at the midpoint there, and a
-    # chain's split vertex within 2^-50 of a sliver's hull edge, taken, joined
-    # the sliver's sides and fanned single vertices across it (degree 5,021
-    # where Triangle's is 236; test_split_at_vertex)
-    if m.vtype[m.corner[e]] != V_SEGMENT and _on_subsegment(m, o, d, m.corner[e], loose):
+    if _on_subsegment(m, o, d, m.corner[e], loose):
         status = _split_at_apex(r, m, segs, e, e, triangles)
         if status != FAILED:
             return status
-    if tw != NO_EDGE and m.vtype[m.corner[tw]] != V_SEGMENT and _on_subsegment(m, o, d, m.corner[tw], loose):
+    if tw != NO_EDGE and _on_subsegment(m, o, d, m.corner[tw], loose):
         status = _split_at_apex(r, m, segs, e, tw, triangles)
         if status != FAILED:
             return status
