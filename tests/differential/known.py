@@ -197,7 +197,7 @@ DEFECTS += [
         "and 1 triangle, ours 7 and none, regressions/concurrent-crossings-closed-region.json). Still open at "
         "stop 32 besides (sweeps of generated inputs under pQ/pcQ/pjQ/pDQ; open/concurrent-crossings-*.json): a "
         "folded mesh ('segments cross at points too close together') where Triangle meshes (-fold.json; since "
-        "pdq-32 it meshes under pQ, pcQ, pjQ with 19 vertices, Triangle 21, but under pq ours' mesh leaves a "
+        "stop 32 it meshes under pQ, pcQ, pjQ with 19 vertices, Triangle 21, but under pq ours' mesh leaves a "
         "piece of segment 8 off its chain where Triangle makes 445 vertices), a PrecisionError under "
         "pDQ where Triangle meshes (one input), a crossing rerouted through a segment's end and back for ever "
         "where Triangle crashes ('could not recover segment', -reroute-loop.json), and a free "
