@@ -23,6 +23,16 @@ cdef inline (double, double, double, double) scaled_pair(double ux, double uy, d
     return ux, uy, vx, vy
 
 
+
+cdef inline (double, double, double, double, double, double) scaled_triple(double ux, double uy, double vx, double vy, double wx, double wy, double limit) noexcept nogil:
+    # scaled_pair for three vectors (a triangle's edges, say)
+    cdef double big = max(max(max(fabs(ux), fabs(uy)), max(fabs(vx), fabs(vy))), max(fabs(wx), fabs(wy)))
+    cdef double f
+    if not (big <= limit and big >= 1.0 / limit) and big > 0.0:
+        f = unit_scale(big)
+        return ux * f, uy * f, vx * f, vy * f, wx * f, wy * f
+    return ux, uy, vx, vy, wx, wy
+
 cdef inline unsigned long long double_bits(double x) noexcept nogil:
     # the bits of x (unit_scale reads its exponent)
     cdef unsigned long long bits

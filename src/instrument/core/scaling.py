@@ -62,6 +62,14 @@ if not cython.compiled:  # compiled, scaling.pxd's inline definition is used
             return ux * f, uy * f, vx * f, vy * f
         return ux, uy, vx, vy
 
+    def scaled_triple(ux, uy, vx, vy, wx, wy, limit):
+        """``scaled_pair`` for three vectors (a triangle's edges, say)."""
+        big = max(abs(ux), abs(uy), abs(vx), abs(vy), abs(wx), abs(wy))
+        if not (big <= limit and big >= 1.0 / limit) and big > 0.0:
+            f = unit_scale(big)
+            return ux * f, uy * f, vx * f, vy * f, wx * f, wy * f
+        return ux, uy, vx, vy, wx, wy
+
 
 @cython.ccall
 @cython.nogil

@@ -30,7 +30,7 @@ from cython.cimports.instrument.core.locate import LOC_BLOCKED, LOC_FAILED, LOC_
 from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, V_FREE, V_SEGMENT, Index, Mesh, is_ghost, kill_triangle, lnext, lprev
 from cython.cimports.instrument.core.navigate import edge_around, find_edge, remember_corners, vertex_edge
 from cython.cimports.instrument.core.predicates import incircle, orient2d
-from cython.cimports.instrument.core.scaling import scaled_dot, unit_scale
+from cython.cimports.instrument.core.scaling import scaled_dot, scaled_triple, unit_scale
 from cython.cimports.instrument.core.status import DONE, FAILED, NEED_ROOM, PAUSE, PRECISION
 from cython.cimports.instrument.core.subsegments import Subsegments, new_record
 from cython.cimports.instrument.counters import (
@@ -749,15 +749,7 @@ def _collapsed(m: Mesh, h: Index, px: cython.double, py: cython.double) -> Index
     cay: cython.double = m.xy[a, 1] - m.xy[c, 1]
     abx: cython.double = m.xy[b, 0] - m.xy[a, 0]
     aby: cython.double = m.xy[b, 1] - m.xy[a, 1]
-    big: cython.double = max(max(max(fabs(bcx), fabs(bcy)), max(fabs(cax), fabs(cay))), max(fabs(abx), fabs(aby)))
-    if not (big <= 2.0**160 and big >= 2.0**-160):
-        f: cython.double = unit_scale(big)
-        bcx *= f
-        bcy *= f
-        cax *= f
-        cay *= f
-        abx *= f
-        aby *= f
+    bcx, bcy, cax, cay, abx, aby = scaled_triple(bcx, bcy, cax, cay, abx, aby, 2.0**160)
     la: cython.double = bcx * bcx + bcy * bcy  # opposite a: edge h
     lb: cython.double = cax * cax + cay * cay  # opposite b: edge lnext(h)
     lc: cython.double = abx * abx + aby * aby  # opposite c: edge lprev(h)
