@@ -12,8 +12,9 @@ The vertex limit of a run (``vertex_limit``), unless the caller sets one
 counts every vertex the run makes, the ones refinement deletes again
 included (they take memory until the end):
 
-    max(1,000,000, 1,000 x (input vertices + segments))
+    max(F, 1,000 x (input vertices + segments))
     + 4 x (area of the domain) / (smallest area bound)      [with a, a bare a, or ra]
+    where F is 1,000,000 with an angle bound (q) and 4,000,000 without,
     raised to the input vertices + S with a Steiner budget -S,
     and never above the memory ceiling: half the machine's memory at
     512 bytes a vertex.
@@ -30,7 +31,14 @@ rounding of a line under ``pq34a0.000899cvi``: a sliver of area ~1e-17, so
 the floor alone, whose split points' cavities are fans of hundreds of
 triangles across it, open defect sliver-hull-limit-slow: 14 s), and no rule of the input's size tells such an
 input from one whose mesh is legitimately that large, so the limit stays
-the same for it.  A run that passes the limit stops with ``SizeLimitError``
+the same for it.  Without an angle bound refinement cannot go on for ever
+(it splits only triangles above their area bound and encroached
+subsegments), so the floor there is four times higher, about ten seconds
+and 2 GB: a chain of segments within rounding of a line under an area bound
+alone (``pa0.000000000000000199cjz``, tests/differential/regressions/
+vertex-limit-sliver-area.json) is graded by its encroached subsegments, not
+by its area of 5e-16, and Triangle and ours both make about 1,546,670
+vertices of it.  A run that passes the limit stops with ``SizeLimitError``
 (the kernel hands control back at least every 16,384 steps, splits of
 subsegments included); an area bound whose expected mesh already passes it
 fails before refining.
@@ -59,6 +67,8 @@ GUARANTEED_ANGLE = 28.6
 USUAL_ANGLE = 34.0
 
 MIN_LIMIT = 1_000_000
+#: The floor of a run without an angle bound, which ends on every input.
+MIN_LIMIT_WITHOUT_ANGLE = 4_000_000
 VERTICES_PER_INPUT = 1_000
 VERTICES_PER_AREA_BOUND = 4.0
 #: Measured: a mesh under an area bound A has about 0.8 vertices per A of domain.
@@ -99,12 +109,15 @@ def vertex_limit(
     domain_area: float,
     area_bound: float | None,
     steiner_budget: int = -1,
+    angle_bound: bool = True,
     ceiling: int | None = None,
 ) -> int:
     """The default vertex limit (see the module's text).  ``n_input``: input
     vertices plus segments; ``area_bound``: the smallest area bound of the
-    run, or None; ``steiner_budget``: -S's number (-1: none)."""
-    limit = max(MIN_LIMIT, VERTICES_PER_INPUT * n_input)
+    run, or None; ``steiner_budget``: -S's number (-1: none);
+    ``angle_bound``: whether the run has a minimum angle (q)."""
+    floor = MIN_LIMIT if angle_bound else MIN_LIMIT_WITHOUT_ANGLE
+    limit = max(floor, VERTICES_PER_INPUT * n_input)
     if area_bound and area_bound > 0 and domain_area > 0:
         extra = VERTICES_PER_AREA_BOUND * domain_area / area_bound
         limit = limit + int(min(extra, 2**62))

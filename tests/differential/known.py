@@ -292,20 +292,6 @@ DEFECTS += [
     ),
 ]
 
-DEFECTS += [
-    Defect(
-        "vertex-limit-below-triangle",
-        "The vertex limit (instrument/limits.py: 1,000,000, or more where the input's size and area bound "
-        "predict it) stops a run whose mesh Triangle makes: a near-collinear chain under "
-        "pa0.000000000000000199cjzQ (campaign seed 3203, stop 32; tests/differential/open/"
-        "vertex-limit-below-triangle.json): ours raises SizeLimitError at 1,013,161 vertices for a limit of "
-        "1,000,009 after 1.7 s, Triangle makes 1,546,668 vertices. The domain is a sliver, so the area rule "
-        "predicts few vertices; the mesh is graded by its segments, which the limit does not count. Not traced",
-        lambda c, f, n: (f.kind == "ours-error-where-triangle-meshes" and "SizeLimitError" in f.message
-                         and c.family == "near-collinear-chain" and read_switches(c.switches).area > 0),
-    ),
-]
-
 BY_ID = {d.id: d for d in DEFECTS}
 
 

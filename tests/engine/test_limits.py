@@ -23,6 +23,7 @@ def test_the_documented_formula():
     assert limits.vertex_limit(n_input=8, domain_area=15.0, area_bound=1e-4, ceiling=ceiling) == 1_000_000 + 600_000
     assert limits.vertex_limit(n_input=8, domain_area=1.0, area_bound=None, steiner_budget=3_000_000, ceiling=ceiling) == 3_000_008
     assert limits.vertex_limit(n_input=8, domain_area=1.0, area_bound=1e-30, ceiling=ceiling) == ceiling
+    assert limits.vertex_limit(n_input=8, domain_area=15.0, area_bound=None, angle_bound=False, ceiling=ceiling) == 4_000_000
     assert limits.memory_ceiling() >= limits.MIN_LIMIT
 
 
@@ -85,6 +86,28 @@ def test_a_steeper_angle_may_run_out_of_precision_first_and_says_why(angle):
     text = str(info.value)
     assert text.startswith("Refinement stopped at ") or text.startswith("Ran out of precision at ")
     assert f"{angle} degrees is above 34" in text and "a smaller angle" in text
+
+
+#: Five points within rounding of y = 0.1, a chain of four segments (campaign seed 3203): under
+#: pa0.000000000000000199cjz its encroached subsegments grade it to 1,546,668 vertices in Triangle
+#: (1,546,667 in ours), far more than its area of 5e-16 predicts.
+SLIVER_CHAIN = {
+    "vertices": [[0.359375, float.fromhex("0x1.999999999994ap-4")], [0.75, float.fromhex("0x1.999999999995ap-4")],
+                 [0.875, float.fromhex("0x1.999999999992ap-4")], [0.890625, float.fromhex("0x1.999999999999ap-4")],
+                 [1.0, float.fromhex("0x1.999999999996ap-4")]],
+    "segments": [[0, 1], [1, 2], [2, 3], [3, 4]],
+}
+
+
+@pytest.mark.parametrize("switches, floor", [("pa0.000000000000000199cjzQ", 8_000), ("pq20a0.000000000000000199cjzQ", 2_000)])
+def test_the_floor_is_higher_without_an_angle_bound(monkeypatch, switches, floor):
+    """A run without q ends on every input, so its floor is MIN_LIMIT_WITHOUT_ANGLE (scaled down here)."""
+    monkeypatch.setattr(limits, "MIN_LIMIT", 2_000)
+    monkeypatch.setattr(limits, "MIN_LIMIT_WITHOUT_ANGLE", 8_000)
+    monkeypatch.setattr(limits, "VERTICES_PER_INPUT", 100)
+    # the floor, plus the area bound's few vertices (4 x 5e-16 / 2e-16)
+    with pytest.raises(SizeLimitError, match=rf"\(limit {floor // 1000},0\d\d; derived from"):
+        instrument.triangulate(SLIVER_CHAIN, switches)
 
 
 def test_the_default_limit_stops_too(monkeypatch):

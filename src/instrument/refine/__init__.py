@@ -92,7 +92,8 @@ def run(
     domain = _domain_area(ms) if bound else 0.0  # the limit depends on the domain only under an area bound
     if max_vertices is None:
         n_input = ms.n_input + ms.segs.count
-        limit = limits.vertex_limit(n_input=n_input, domain_area=domain, area_bound=bound, steiner_budget=steiner_budget(ms, o))
+        limit = limits.vertex_limit(n_input=n_input, domain_area=domain, area_bound=bound,
+                                    steiner_budget=steiner_budget(ms, o), angle_bound=o.q)
     else:
         limit = int(max_vertices)
     why = limits.explain(max_vertices is None)

@@ -133,11 +133,12 @@ Long options (ruppert's own):
                         a terminal).
     --max-vertices N    Stop refinement with an error once the mesh has more
                         than N vertices.  The default is derived from the
-                        input: max(1,000,000, 1,000 per input vertex and
-                        segment), plus 4 per maximum area of domain with -a,
-                        raised to the input plus -S's budget, and at most
-                        what half of this machine's memory holds.  An area
-                        bound whose mesh needs more fails at once.
+                        input: max(1,000,000 (4,000,000 without -q), 1,000
+                        per input vertex and segment), plus 4 per maximum
+                        area of domain with -a, raised to the input plus
+                        -S's budget, and at most what half of this
+                        machine's memory holds.  An area bound whose mesh
+                        needs more fails at once.
     --threads N         Threads for the Delaunay triangulation of a large
                         input (default: every core this process may use).
                         The mesh and the work counts are the same on any
