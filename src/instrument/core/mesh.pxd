@@ -46,12 +46,14 @@ cdef class Mesh:
     cdef public Index outer_space_edge     # the hull edge Triangle's outer-space handle holds (NO_EDGE: none known)
 
 
+# Of an edge e >= 0: e % 3 unsigned, the shorter division (the signed one
+# corrects for negative remainders; these two run in every inner loop)
 cdef inline Index lnext(Index e) noexcept nogil:
-    return e - 2 if e % 3 == 2 else e + 1
+    return e - 2 if <size_t>e % 3 == 2 else e + 1
 
 
 cdef inline Index lprev(Index e) noexcept nogil:
-    return e + 2 if e % 3 == 0 else e - 1
+    return e + 2 if <size_t>e % 3 == 0 else e - 1
 
 
 cdef inline Index org(Mesh m, Index e) noexcept nogil:
