@@ -60,15 +60,15 @@ def _shape_scaled(
     l1: cython.double
     l2: cython.double
     dot: cython.double
-    if lc < la and lc < lb:  # shortest a-b, smallest angle at c: vectors c->a, c->b
-        u, v, mn, l1, l2 = a, b, lc, la, lb
-        dot = -(cax * bcx + cay * bcy)
-    elif la < lb:  # smallest angle at a: a->b, a->c
+    if la < lb and la < lc:  # smallest angle at a: a->b, a->c
         u, v, mn, l1, l2 = b, c, la, lb, lc
         dot = -(abx * cax + aby * cay)
-    else:  # smallest angle at b: b->c, b->a
+    elif lb < lc:  # smallest angle at b: b->c, b->a
         u, v, mn, l1, l2 = c, a, lb, lc, la
         dot = -(bcx * abx + bcy * aby)
+    else:  # shortest a-b, smallest angle at c: vectors c->a, c->b
+        u, v, mn, l1, l2 = a, b, lc, la, lb
+        dot = -(cax * bcx + cay * bcy)
     cos2: cython.double = dot * dot / (l1 * l2)
     if dot < 0.0:
         cos2 = -cos2
@@ -127,16 +127,25 @@ def _shape(m: Mesh, a: Index, b: Index, c: Index, circ: cython.bint) -> tuple[cy
     l2: cython.double
     dot: cython.double
     # the dot products of the two edges at the smallest angle, from the edge
-    # vectors (negating is exact: the same roundings as from the coordinates)
-    if lc < la and lc < lb:  # shortest a-b, smallest angle at c: c->a, c->b
-        u, v, mn, l1, l2 = a, b, lc, la, lb
-        dot = -(cax * bcx + cay * bcy)
-    elif la < lb:  # at a: a->b, a->c
+    # vectors (negating is exact: the same roundings as from the coordinates).
+    # Ties go as in Triangle's testtriangle, whose handle is (org b, dest c,
+    # apex a): the edge opposite the apex first, then the one opposite the
+    # org, then the dest.  (Tested c's edge first, ours took another of two
+    # equal edges: in the 12-point star, step 4, under q30, the isosceles
+    # triangle (0.19587, 0.61309) (0.25, 0.61309) (0.22294, 0.62871) has two
+    # edges of one length, one a subsegment and the other joining two
+    # segments on one shell about their crossing; Triangle takes the
+    # subsegment and splits the triangle, ours took the other and exempted
+    # it: 266 vertices against Triangle's 267.)
+    if la < lb and la < lc:  # at a: a->b, a->c
         u, v, mn, l1, l2 = b, c, la, lb, lc
         dot = -(abx * cax + aby * cay)
-    else:  # at b: b->c, b->a
+    elif lb < lc:  # at b: b->c, b->a
         u, v, mn, l1, l2 = c, a, lb, lc, la
         dot = -(bcx * abx + bcy * aby)
+    else:  # shortest a-b, smallest angle at c: c->a, c->b
+        u, v, mn, l1, l2 = a, b, lc, la, lb
+        dot = -(cax * bcx + cay * bcy)
     cos2: cython.double = dot * dot / (l1 * l2)
     if dot < 0.0:  # an obtuse smallest angle cannot happen; keep the sign meaningful
         cos2 = -cos2
