@@ -56,13 +56,23 @@ DEFECTS = [
         "Triangle's -VVV queues none, see refine/criteria.py). Left: the 18-point "
         "star, step 8, at split 612 (scripts/steiner_bisect.py: -S811, Triangle's point (0.41318, 0.64257)), "
         "where Triangle serves (0.41318, 0.65038) (0.41318, 0.63472) (0.42674, "
-        "0.64255), an entry whose vertex records were reused more than once (918 against 1110, below). Under pq33 "
+        "0.64255), an entry whose vertex records were reused more than once (918 against 1110, below): by the "
+        "vertex pointers of its -VVV record lines, the entry was queued as (0.41318, 0.65038) (0.42668, 0.61541) "
+        "(0.42674, 0.64255) (its apex in the record of the deleted (0.44298, 0.62289)), and its dest's record "
+        "was freed later (Chew's deletion) and taken by (0.41318, 0.63472). Under pq33 "
         "80 of 81 is 77 of 81 (python scripts/star_sweep.py --switches pq33), and the 21-point star, step 10, "
         "ends above Triangle: 3761 vertices against 3706 (3629 at f821465; Triangle's spread 3323..3706: above "
         "the 1 % rule's 3743, within the harness's 3783); it follows Triangle's splits to split 1894, where "
         "Triangle serves (0.53112, 0.46093) (0.53310, 0.45412) (0.53345, 0.45972) before (0.52704, 0.46091) "
         "(0.53112, 0.46093) (0.52936, 0.46224), queued just before it in a higher bucket: served from an older "
-        "entry with another key (not found yet)",
+        "entry with another key, which the vertex pointers of Triangle's -VVV record lines name: (0.53112, "
+        "0.46093) (0.52909, 0.46004) (0.53346, 0.45971), queued twice, whose dest's and apex's vertex records "
+        "were taken by (0.53310, 0.45412) and (0.53345, 0.45972) before its record held the triangle served; "
+        "refine/ghosts.py's ghosts wait for one vertex record only. The 19-point star, step 7, under pq33 (1988 "
+        "against 1989) parts so at split 665: Triangle serves (0.40890, 0.75928) (0.38088, 0.77157) (0.37591, "
+        "0.75710) from the entry of (0.38910, 0.74163) (0.38088, 0.77157) (0.38025, 0.74634) that it queued "
+        "again when that triangle's split point was rejected; Chew's deletions at the next two subsegment "
+        "splits freed the org's and the apex's vertex records, and the two split points took them",
         lambda c, f, n: f.kind == "size" and c.family == "star" and read_switches(c.switches).q,
     ),
 ]
