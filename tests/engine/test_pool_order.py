@@ -130,3 +130,24 @@ def test_short_refinements_make_triangles_vertices(kind, opts):
         a, b = np.asarray(ours["vertices"]), np.asarray(theirs["vertices"])
         matched += a.shape == b.shape and np.array_equal(np.unique(a, axis=0), np.unique(b, axis=0))
     assert matched >= 7, matched
+
+
+def test_equal_shortest_edges_break_ties_as_triangle():
+    """Of two equally short edges, the quality test takes Triangle's: the
+    one opposite the apex, then the org's, then the dest's (refine/
+    criteria.py).  The 12-point star, step 4, under q30 has an isosceles
+    triangle (0.19587, 0.61309) (0.25, 0.61309) (0.22294, 0.62871) whose
+    two short edges are a subsegment and an edge between two segments on
+    one shell about their crossing: Triangle takes the subsegment, so the
+    triangle is not exempt from the angle test and is split.  Taking the
+    other edge, ours exempted it and ended with 266 vertices for 267."""
+    n, k = 12, 4
+    a = 2 * np.pi * np.arange(n) / n
+    tri = {"vertices": np.c_[0.5 + 0.5 * np.cos(a), 0.5 + 0.5 * np.sin(a)],
+           "segments": [(i, (i + k) % n) for i in range(n)]}
+    ours = instrument.triangulate(tri, "pq30")
+    assert check_mesh(ours, pslg=tri, min_angle=30) == []
+    theirs = triangle.triangulate(tri, "pq30")
+    a, b = np.asarray(ours["vertices"]), np.asarray(theirs["vertices"])
+    assert a.shape == b.shape
+    np.testing.assert_array_equal(np.unique(a, axis=0), np.unique(b, axis=0))
