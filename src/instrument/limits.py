@@ -24,13 +24,12 @@ vertices per input vertex over the corpus and the package's samples at q30
 triangles, so about 0.8 vertices, per A of domain (so 4 per A leaves five
 times that); refinement uses 290-420 bytes a vertex at its peak (measured:
 ``pq30a1e-6`` on the unit square, ``pq40S300000`` on A.poly).  The
-1,000,000 floor is about four seconds and 400 MB of work where the work per
-vertex stays flat; where it grows with the mesh it is more (six points within
-rounding of a line under ``pq34a0.000899cvi``: a sliver of area ~1e-17, so
-the floor alone, whose split points' cavities are fans of hundreds of
-triangles across it, open defect sliver-hull-limit-slow: 14 s), and no rule of the input's size tells such an
-input from one whose mesh is legitimately that large, so the limit stays
-the same for it.  A run that passes the limit stops with ``SizeLimitError``
+1,000,000 floor is about four seconds and 400 MB of work (six points
+within rounding of a line under ``pq34a0.000899cvi``, a sliver of area
+~1e-17 that only the floor bounds: 1.9 s of CPU since stop 33, 14 s while
+its split points' cavities grew into fans across the sliver), and no rule
+of the input's size tells such an input from one whose mesh is
+legitimately that large, so the limit stays the same for it.  A run that passes the limit stops with ``SizeLimitError``
 (the kernel hands control back at least every 16,384 steps, splits of
 subsegments included); an area bound whose expected mesh already passes it
 fails before refining.
