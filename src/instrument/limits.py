@@ -25,18 +25,17 @@ vertices per input vertex over the corpus and the package's samples at q30
 triangles, so about 0.8 vertices, per A of domain (so 4 per A leaves five
 times that); refinement uses 290-420 bytes a vertex at its peak (measured:
 ``pq30a1e-6`` on the unit square, ``pq40S300000`` on A.poly).  The
-1,000,000 floor is about four seconds and 400 MB of work where the work per
-vertex stays flat; where it grows with the mesh it is more (six points within
-rounding of a line under ``pq34a0.000899cvi``: a sliver of area ~1e-17, so
-the floor alone, whose split points' cavities are fans of hundreds of
-triangles across it, open defect sliver-hull-limit-slow: 14 s), and no rule of the input's size tells such an
-input from one whose mesh is legitimately that large, so the limit stays
-the same for it.  Without an angle bound refinement cannot go on for ever
-(it splits only triangles above their area bound and encroached
-subsegments), so the floor there is four times higher, about ten seconds
-and 2 GB: a chain of segments within rounding of a line under an area bound
-alone (``pa0.000000000000000199cjz``, tests/differential/regressions/
-vertex-limit-sliver-area.json) is graded by its encroached subsegments, not
+1,000,000 floor is about four seconds and 400 MB of work (six points
+within rounding of a line under ``pq34a0.000899cvi``, a sliver of area
+~1e-17 that only the floor bounds: 1.9 s of CPU since stop 33, 14 s while
+its split points' cavities grew into fans across the sliver), and no rule
+of the input's size tells such an input from one whose mesh is
+legitimately that large, so the limit stays the same for it.  Without an
+angle bound refinement cannot go on for ever (it splits only triangles
+above their area bound and encroached subsegments), so the floor there is
+four times higher, about ten seconds and 2 GB: a chain of segments within
+rounding of a line under an area bound alone (``pa0.000000000000000199cjz``,
+tests/engine/test_limits.py) is graded by its encroached subsegments, not
 by its area of 5e-16, and Triangle and ours both make about 1,546,670
 vertices of it.  A run that passes the limit stops with ``SizeLimitError``
 (the kernel hands control back at least every 16,384 steps, splits of

@@ -282,29 +282,6 @@ DEFECTS += [
     ),
 ]
 
-DEFECTS += [
-    Defect(
-        "sliver-hull-limit-slow",
-        "Six points within rounding of the line y = x / 3 (near-collinear-chain, a chain of 5 segments) under "
-        "pq34a0.000899cvi (campaign seed 3101; regressions/sliver-hull-limit.json, which now passes: the kernel "
-        "pauses during subsegment splitting, so the run stops at the vertex limit, 1,004,792 vertices in 14 s, "
-        "where it stopped at 1,372,556 after 28 s). Its work still grows faster than its output (incircle tests "
-        "per vertex 7 at -S128000, 21 at -S1024000; 12.9 s at -S1024000, Triangle 2.6 s), and the cause is ours: "
-        "the 7th split takes the hull subsegment (0.9375, ..) - (0.7003, ..) at the chain's split vertex "
-        "(0.8782, ..), which lies within 2^-50 of its line (splits._split_at_apex), where Triangle splits at the "
-        "midpoint (0.8189, ..); from there ours' vertices join the sliver's two sides and fans grow from single "
-        "vertices (max degree 1,179 at -S128000 and 5,021 at -S512000, Triangle's 50 and 236; ours' meshes "
-        "constrained Delaunay by the checker, Triangle's failing it from -S1000 on). Splitting at an apex only "
-        "when it was not made by splitting a subsegment makes ours' first 300 splits Triangle's and the run "
-        "linear (-S1024000: 3.0 s, 7.5 tests per vertex; the limit in 2.1 s), golden 0 of 450, but breaks "
-        "tests/engine/test_split_bent.py's bent configuration (PrecisionError under pcqQ), and taking such a "
-        "split vertex only where the sliver is bounded by subsegments on every side still fails it under pcDQ "
-        "(stop 32): not applied",
-        lambda c, f, n: (f.kind == "ours-timeout" and c.family == "near-collinear-chain"
-                         and read_switches(c.switches).angle >= 34),
-    ),
-]
-
 BY_ID = {d.id: d for d in DEFECTS}
 
 

@@ -67,7 +67,7 @@ from cython.cimports.instrument.refine.inplace import split_in_place
 from cython.cimports.instrument.refine.order import TRIANGLE
 from cython.cimports.instrument.refine.queues import ghost_room, ghost_slot, ghosts_made, queue_clear, queue_compact, queue_pop, queue_push, queue_used
 from cython.cimports.instrument.refine.state import T_CIRCUMCENTER, T_OFFCENTER, T_REJECTED, T_SEGMENT, Refiner, step_begins, step_undone, trace_full, trace_row
-from cython.cimports.libc.math import fabs, hypot, nextafter, sqrt
+from cython.cimports.libc.math import fabs, floor, hypot, log2, nextafter, sqrt
 
 #: steps (queue pops, subsegment splits) between two PAUSEs, so that the
 #: driver sees Ctrl-C and the vertex limit at least that often
@@ -81,6 +81,12 @@ ON_SEGMENT = cython.declare(cython.double, 2.0**-50)
 
 #: half a unit in the last place, relative
 HALF_ULP = cython.declare(cython.double, 2.0**-53)
+
+#: A split vertex's distance from a subsegment's end is a power of two up
+#: to this (relative; in log2 units), and a split point this close to a
+#: vertex (relative to its largest coordinate) lies beside it: both far
+#: above rounding's 2^-52 and far below any distinct shell or vertex.
+SHELL_ROUNDING = cython.declare(cython.double, 2.0**-36)
 
 #: ... and its distance from the line is below this fraction of its distance
 #: from the nearer end (an angle below 2^-30 radians seen from that end).
@@ -176,6 +182,38 @@ def _on_subsegment(m: Mesh, a: Index, b: Index, c: Index, loose: cython.bint) ->
         return True
     e0: Index = vertex_edge(m, c)
     return e0 < 0 or edge_around(m, e0, -1) < 0
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _on_later_shell(m: Mesh, a: Index, c: Index, shell: cython.double) -> cython.bint:
+    """Is vertex ``c`` a split vertex whose distance from the end ``a`` is a
+    power of two (up to rounding) no more than half ``shell``, the distance
+    of a split point on a power-of-two shell around ``a``?  The shells of
+    the later splits between ``a`` and that point then come to it."""
+    if m.vtype[c] != V_SEGMENT or shell <= 0.0:
+        return False
+    rc: cython.double = hypot(m.xy[c, 0] - m.xy[a, 0], m.xy[c, 1] - m.xy[a, 1])
+    if not (2.0 * rc <= shell * (1.0 + SHELL_ROUNDING)):
+        return False
+    lg: cython.double = log2(rc)  # NaN or infinite for a zero distance: not a shell
+    return fabs(lg - floor(lg + 0.5)) <= SHELL_ROUNDING
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _beside_rim(r: Refiner, m: Mesh, nb: Index, px: cython.double, py: cython.double) -> cython.bint:
+    """Does a vertex of the cavity's rim (``nb`` edges) lie within rounding
+    of the point (px, py)?"""
+    near: cython.double = SHELL_ROUNDING * max(fabs(px), fabs(py))
+    u: Index
+    for j in range(nb):
+        u = r.bnd[j, 1]
+        if fabs(m.xy[u, 0] - px) <= near and fabs(m.xy[u, 1] - py) <= near:
+            return True
+    return False
 
 
 @cython.cfunc
@@ -393,6 +431,24 @@ def _bent_away(m: Mesh, e: Index, px: cython.double, py: cython.double) -> Index
     return -1
 
 
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _split_cavity(r: Refiner, m: Mesh, e: Index, px: cython.double, py: cython.double) -> tuple[Index, Index, Index]:
+    """The cavity of a split point (px, py) of subsegment edge ``e``:
+    ``(far, n, nb)``, ``far`` the side _bent_away keeps (or -1) and ``n``,
+    ``nb`` collect_cavity's counts."""
+    tw: Index = m.twin[e]
+    far: Index = _bent_away(m, e, px, py) if tw != NO_EDGE else -1
+    n: Index
+    nb: Index
+    if far >= 0:
+        n, nb = collect_cavity(r, m, px, py, m.twin[far] // 3, -1, -1)
+    else:
+        n, nb = collect_cavity(r, m, px, py, e // 3, tw // 3 if tw != NO_EDGE else -1, e)
+    return far, n, nb
+
+
 @cython.ccall
 @cython.nogil
 @cython.exceptval(check=False)
@@ -436,6 +492,7 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
     split: cython.double = 0.5
     length: cython.double
     p2: cython.double
+    shell: cython.double = 0.0  # the split point's distance from e1 (acute1) or e0, on a shell
     big: cython.double = 0.0
     f: cython.double
     if acute0 or acute1:
@@ -455,6 +512,7 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
             p2 *= 0.5
         # a power of two from the acute end; with both acute, from e1
         split = p2 / length
+        shell = p2
         if acute1:
             split = 1.0 - split
     px: cython.double = m.xy[e0, 0] + split * ex
@@ -481,15 +539,34 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
     # point (it rounds onto an end), a free apex within half an ulp of it
     # takes the split too (_on_subsegment); failing that, a split point on
     # an end runs out of precision.
+    # Except a split vertex of another segment on a power-of-two shell
+    # around the acute end this split's shell is measured from, no farther
+    # than half the split point's: the later splits of the piece between
+    # that end and the split point, on the halved shells, come to it, and
+    # take it then (it is the apex there, at the split point).  Two
+    # segments meeting at an end at an angle within rounding (a chain inside
+    # a sliver's hull) are split on the same shells around it; taking the
+    # other's shell vertex at once (3/4 along a hull subsegment, where
+    # Triangle splits at its shell 1/2) joined the two and grew fans of
+    # thousands of triangles from single vertices across the sliver.  If the
+    # split point lands beside a vertex of its cavity (one that is not its
+    # apex: that vertex would then encroach every piece beside it, the
+    # pieces shrinking towards it until precision ran out), the apex takes
+    # the split after all.
     status: cython.int
     cornered: cython.bint = (px == m.xy[o, 0] and py == m.xy[o, 1]) or (px == m.xy[d, 0] and py == m.xy[d, 1])
     loose: cython.bint = cornered or r.cfg.angle_test
-    if _on_subsegment(m, o, d, m.corner[e], loose):
-        status = _split_at_apex(r, m, segs, e, e, triangles)
-        if status != FAILED:
-            return status
-    if tw != NO_EDGE and _on_subsegment(m, o, d, m.corner[tw], loose):
-        status = _split_at_apex(r, m, segs, e, tw, triangles)
+    later: Index = -1  # the side whose apex a later split takes
+    apex_side: Index
+    for k in range(2):
+        apex_side = e if k == 0 else tw
+        if apex_side == NO_EDGE or not _on_subsegment(m, o, d, m.corner[apex_side], loose):
+            continue
+        if not cornered and _on_later_shell(m, e1 if acute1 else e0, m.corner[apex_side], shell):
+            if later < 0:
+                later = apex_side
+            continue
+        status = _split_at_apex(r, m, segs, e, apex_side, triangles)
         if status != FAILED:
             return status
     if cornered:
@@ -521,11 +598,7 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
     folded: cython.bint = False
     moved: cython.bint
     for attempt in range(2):
-        far = _bent_away(m, e, px, py) if tw != NO_EDGE else -1
-        if far >= 0:
-            n, nb = collect_cavity(r, m, px, py, m.twin[far] // 3, -1, -1)
-        else:
-            n, nb = collect_cavity(r, m, px, py, e // 3, tw // 3 if tw != NO_EDGE else -1, e)
+        far, n, nb = _split_cavity(r, m, e, px, py)
         folded = False
         for j in range(nb):
             u = r.bnd[j, 1]
@@ -534,6 +607,12 @@ def split_subsegment(r: Refiner, m: Mesh, segs: Subsegments, e: Index, triangles
                 folded = True
                 break
         if not folded:
+            if later >= 0 and _beside_rim(r, m, nb, px, py):
+                forget_cavity(r, m, n)
+                status = _split_at_apex(r, m, segs, e, later, triangles)
+                if status != FAILED:
+                    return status
+                far, n, nb = _split_cavity(r, m, e, px, py)
             break
         forget_cavity(r, m, n)
         if attempt > 0:
