@@ -670,3 +670,26 @@ def test_an_input_vertex_beside_a_segment_may_be_passed_by_where_another_segment
         assert sorted(map(sorted, ours["triangles"].tolist())) == sorted(map(sorted, theirs["triangles"].tolist()))
         cut = dict(ours, segments=np.array([s for s in ours["segments"].tolist() if sorted(s) != [5, 8]]))
         assert any("not a chain of collinear subsegments" in p for p in check_mesh(cut, pslg))
+
+
+def test_another_sides_vertices_near_a_segment_crossing_beside_a_corner_are_not_its_nodes():
+    """A segment from an ulp outside the unit square's corner (1, 1) into it
+    crosses the top side 7 ulps beside the corner.  Under pq the right side is
+    split towards the corner (1 - 2^-40 ... 1 - 2^-48): those vertices, exactly
+    on x = 1, are within the checker's tolerance of the segment's line and came
+    before the crossing along it, after its end outside the mesh, so a piece
+    from that end seemed to cross the mesh (Triangle's mesh and ours, the same
+    150 vertices; regressions/concurrent-crossings-fold-pq.json).  They are
+    nodes of the right side only; the crossing stays a node of the segment,
+    and a missing subsegment beside it is still found."""
+    v = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0],
+                  [float.fromhex("0x1.ffffffffffffcp-1"), float.fromhex("0x1.0000000000002p+0")], [0.3125, 0.71875]])
+    pslg = {"vertices": v, "segments": np.array([[0, 1], [1, 2], [2, 3], [3, 0], [4, 5]])}
+    ours, theirs = instrument.triangulate(pslg, "pqQ"), triangle.triangulate(pslg, "pqQ")
+    assert check_mesh(ours, pslg) == [] and check_mesh(theirs, pslg) == []
+    assert np.array_equal(ours["vertices"], theirs["vertices"])
+    V = ours["vertices"]
+    crossing = next(i for i, (x, y) in enumerate(V.tolist()) if y == 1.0 and 0.5 < x < 1.0 and 1.0 - x < 1e-14)
+    along = next(s for s in ours["segments"].tolist() if crossing in s and V[sum(s) - crossing][1] < 1.0)
+    cut = dict(ours, segments=np.array([s for s in ours["segments"].tolist() if s != along]))
+    assert any("input segment 4 " in p and "not a chain of collinear subsegments" in p for p in check_mesh(cut, pslg))

@@ -30,7 +30,7 @@ from cython.cimports.instrument.core.locate import LOC_BLOCKED, LOC_FAILED, LOC_
 from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, V_FREE, V_SEGMENT, Index, Mesh, is_ghost, kill_triangle, lnext, lprev
 from cython.cimports.instrument.core.navigate import edge_around, find_edge, remember_corners, vertex_edge
 from cython.cimports.instrument.core.predicates import incircle, orient2d
-from cython.cimports.instrument.core.scaling import scaled_dot, scaled_triple, unit_scale
+from cython.cimports.instrument.core.scaling import scaled_dot, scaled_pair, scaled_triple, unit_scale
 from cython.cimports.instrument.core.status import DONE, FAILED, NEED_ROOM, PAUSE, PRECISION
 from cython.cimports.instrument.core.subsegments import Subsegments, new_record
 from cython.cimports.instrument.counters import (
@@ -847,6 +847,25 @@ def _collapsed(m: Mesh, h: Index, px: cython.double, py: cython.double) -> Index
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
+def _needle(m: Mesh, e: Index) -> cython.bint:
+    """The angle opposite edge ``e`` (its triangle's shortest edge: the
+    smallest angle) has a sine below 2^-26 (1e-6 degrees).  The two edges
+    at that angle are the longer ones, within a factor 2 of each other, so
+    one power-of-two scale keeps both squares in range."""
+    a: Index = m.corner[e]
+    u: Index = m.corner[lnext(e)]
+    v: Index = m.corner[lprev(e)]
+    ux: cython.double = m.xy[u, 0] - m.xy[a, 0]
+    uy: cython.double = m.xy[u, 1] - m.xy[a, 1]
+    vx: cython.double = m.xy[v, 0] - m.xy[a, 0]
+    vy: cython.double = m.xy[v, 1] - m.xy[a, 1]
+    ux, uy, vx, vy = scaled_pair(ux, uy, vx, vy, 2.0**240)
+    return fabs(orient2d(0.0, 0.0, ux, uy, vx, vy)) < 2.0**-26 * sqrt((ux * ux + uy * uy) * (vx * vx + vy * vy))
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
 def _reject_at(r: Refiner, m: Mesh, e: Index, steps: cython.longlong) -> cython.int:
     """Reject a Steiner point that lies on or across edge ``e`` (its walk
     stopped there, or it rounded onto it): where ``e`` is a subsegment the
@@ -871,8 +890,9 @@ def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cyth
     is pooled).  A point that cannot be placed strictly inside its cavity
     (on a vertex, or rounded onto or across an edge) leaves the triangle
     unsplit.  Returns DONE, NEED_ROOM (nothing changed) or PRECISION (the
-    point rounded onto the triangle's shortest edge, and that edge is not a
-    subsegment, which it would encroach: see _collapsed)."""
+    point rounded onto the triangle's shortest edge, that edge is not a
+    subsegment, which it would encroach, and the triangle is a needle: see
+    _collapsed and _needle)."""
     step_begins(r, m.work)
     t: Index = h // 3
     px: cython.double
@@ -908,7 +928,7 @@ def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cyth
             # on a corner: rounded there, as no off-center or circumcenter
             # lies at one.  On an end of the shortest edge it is that edge's
             # collapse (below): computed again from the edge's ends, or
-            # PRECISION.  (Skipped as a duplicate, the needle (0.00149, 0)
+            # PRECISION for a needle (skipped otherwise).  (Skipped as a duplicate, the needle (0.00149, 0)
             # (0.00149, 2^-1022) (1.05e-5, 2^-149) stayed in a mesh returned
             # under q10 with its 0-degree angle.)  Elsewhere (the far corner)
             # the split is skipped, as Triangle skips a duplicate vertex.
@@ -975,6 +995,22 @@ def split_bad_triangle(r: Refiner, m: Mesh, segs: Subsegments, h: Index) -> cyth
         # (1.5 * 2^-399, 1) (3.66e-4, 0.125) under q25Y, one triangle, as
         # Triangle's (regressions/hull-needle-rounds-onto-subsegment.json)
         return _reject_at(r, m, bad_edge, 0)
+    if bad_edge >= 0 and not _needle(m, bad_edge):
+        # no double lies off the shortest edge (an ulp or two long): the
+        # point rounded onto an end of it (Triangle frees a new vertex equal
+        # to a corner of its triangle as a duplicate) or onto or across its
+        # line (Triangle inserts it there, which makes the same triangle
+        # again).  Skipped as a duplicate: the triangle stays, with its
+        # angle of a few degrees.  Two segments crossing at 5 degrees near
+        # 2^-101, a free vertex 2e-48 from the crossing within rounding of
+        # one of them: their pieces are halved towards the crossing down to
+        # ulps, the triangles between them down to ulp-sized ones (as
+        # Triangle's), and refinement ran out of precision where Triangle
+        # meshes (regressions/concurrent-crossings-vertex-on-segment-precision.json).
+        # A needle (the angle zero to 1e-6 degrees, whose shortest edge has
+        # no double between its ends) is not returned so: out of precision
+        m.work[C_DUPLICATE] += 1
+        return DONE
     if bad_edge >= 0:
         r.error_org = m.corner[lnext(bad_edge)]
         r.error_dest = m.corner[lprev(bad_edge)]
