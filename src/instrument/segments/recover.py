@@ -41,8 +41,8 @@ import numpy as np
 
 import cython
 from cython.cimports.instrument.core.insert import (
-    flip, flip_in_place, lawson, lawson_in_place, should_flip, split_edge, split_edge_in_place, split_triangle, splits_cleanly,
-    star_edges,
+    flip, flip_in_place, lawson, lawson_in_place, should_flip, split_edge, split_edge_in_place, split_triangle,
+    splits_after_a_flip, splits_cleanly, star_edges,
 )
 from cython.cimports.instrument.core.locate import LOC_INSIDE, LOC_ON_EDGE, LOC_ON_VERTEX, walk
 from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, Index, Mesh, lnext, lprev, next_hull_edge, set_parent, spare_triangles
@@ -1385,7 +1385,7 @@ def _split_at_crossing(
             _place_crossing(m, segs, r, nv, bx, by, right, left, bt)
             return end, False, False, True
         if (_an_ulp_off(xy[end, 0], xy[end, 1], bx, by) and _within_subsegment(xy, right, left, bx, by)
-                and splits_cleanly(m, c, bx, by)):
+                and (splits_cleanly(m, c, bx, by) or splits_after_a_flip(m, c, bx, by))):
             beside = True
             t = bt
             px = bx
@@ -1419,7 +1419,7 @@ def _split_at_crossing(
             return b, True, False, False
     status: cython.int
     e: Index
-    if splits_cleanly(m, c, px, py):
+    if splits_cleanly(m, c, px, py) or beside:
         half0: Index = new_record(segs, segs.marker[r], segs.source[r], segs.ends[r, 0], segs.ends[r, 1])
         if half0 < 0:
             return -1, False, False, False
