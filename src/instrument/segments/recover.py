@@ -1345,10 +1345,14 @@ def _split_at_crossing(
     outside the mesh (``copied``; the caller records it, and it takes
     ``E``'s marker at the end, as Triangle's copy shares ``E``'s
     subsegments), so the output has Triangle's vertices while the mesh
-    stays a valid one.  Elsewhere (the point rounded out of the triangles
-    beside ``c``) ``E`` is taken as before; where the piece crossed other
-    edges before ``c``, ``_recover`` decides that before Triangle's flips
-    (``_beside_splits``) and recovers the piece to ``E`` itself.
+    stays a valid one.  A point rounded out of the triangles beside ``c``
+    across one side of theirs is Triangle's all the same where Triangle's
+    flips after the split turn that side and leave a valid mesh
+    (``splits_after_a_flip``: a sliver beside ``c`` at ``E``,
+    regressions/through-vertex-after-crossing-count.json); elsewhere ``E``
+    is taken as before.  Where the piece crossed other edges before ``c``,
+    ``_recover`` decides that before Triangle's flips (``_beside_splits``)
+    and recovers the piece to ``E`` itself.
     """
     xy = m.xy
     nv: Index = m.nvert
