@@ -284,11 +284,27 @@ DEFECTS += [
         "regressions/through-vertex-after-crossing.json) was traced at stop 32 and passes: not the segment "
         "through the square's corner but a piece of another segment, crossed near its far end and then passing "
         "4e-17 beside the end of a third segment, where Triangle's flips start past that end and fold its mesh "
-        "(segments/recover._flips_start_past; tests/engine/test_beside_vertex_after_crossing.py). Left, not "
-        "traced: two cases of a 400-case crossing-segments campaign of seed 3101 at stop 32, failures this "
-        "matcher explained before and that the old kernels make too: 81 vertices under po2niQ where ours makes "
-        "77 (regressions/through-vertex-after-crossing-count.json), and one vertex marker 1 fewer than "
-        "Triangle's under zipQ, 29 vertices each (regressions/through-vertex-after-crossing-markers.json)",
+        "(segments/recover._flips_start_past; tests/engine/test_beside_vertex_after_crossing.py). Two cases of a "
+        "400-case crossing-segments campaign of seed 3101 at stop 32, traced at stop 33: (1) 81 vertices under "
+        "po2niQ where ours made 77 (regressions/through-vertex-after-crossing-count.json) passes: the piece "
+        "after the first crossing crosses a segment 5e-18 before its end E, and Triangle's crossing vertex beside "
+        "E rounds across the side of a sliver beside that segment; Triangle splits there all the same and its "
+        "flips turn that side into a valid mesh, where ours took E (core/insert.splits_after_a_flip; "
+        "tests/engine/test_crossing_across_a_sliver.py). (2) Left: one vertex marker 1 fewer than Triangle's "
+        "under zipQ (and pQ), 29 vertices each (regressions/through-vertex-after-crossing-markers.json). The "
+        "diagonal (0.5005, 0.4917)-(-0.4994, -0.4914) passes exactly through E = (0.000536, 0.000146), the start "
+        "of segment E-(0.0417, ..) and inside the collinear segment (0.000222, ..)-(0.00828, ..); its piece from "
+        "its first crossing meets the latter at E exactly, so Triangle makes a copy of E there and keeps both in "
+        "its mesh: after its flips E lies on the near side of a zero-area triangle (E, (-0.4994, ..), copy), and "
+        "the edge (-0.4994, ..)-E facing the later segment (0.000122, 2.2e-308)-(0.0409, 0.000237) is no "
+        "subsegment (the copy's is). Triangle finds no subsegment facing that segment's start, scouts from its "
+        "far end, splits (0.00828, ..)-(0.0417, ..) at (0.025286036153, ..) first and the diagonal's piece after "
+        "that, from that rounded vertex (-VVV). Ours' mesh holds E alone (the copy is output beside the mesh), "
+        "the subsegment faces the start, and ours crosses the diagonal first: both crossing vertices differ from "
+        "Triangle's (by up to 667 ulps) and come in the other order, and the marker of the eaten vertex "
+        "(0.000222, ..) is 1 where Triangle's is 0; the harness's marker compare also takes ours' unused copy for "
+        "an eaten crossing where Triangle's unused vertex is E itself. Following it means modelling the copy "
+        "inside the mesh",
         lambda c, f, n: (c.family == "crossing-segments" and f.kind in ("count", "markers", "area-total", "size")
                          and _segment_through_input_vertex(c)),
     ),

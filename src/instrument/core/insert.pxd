@@ -12,3 +12,4 @@ cpdef Index star_edges(Mesh m, Index t, long long[::1] stack) noexcept nogil
 cpdef Index lawson(Mesh m, long long[::1] stack, Index n) noexcept nogil
 cpdef Index make_delaunay(Mesh m, long long[::1] stack, unsigned char[::1] queued) noexcept nogil
 cpdef bint splits_cleanly(Mesh m, Index c, double px, double py) noexcept nogil
+cpdef bint splits_after_a_flip(Mesh m, Index c, double px, double py) noexcept nogil

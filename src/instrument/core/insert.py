@@ -568,3 +568,55 @@ def splits_cleanly(m: Mesh, c: Index, px: cython.double, py: cython.double) -> c
     m.work[C_ORIENT] += 2
     return (orient2d(px, py, xy[x, 0], xy[x, 1], xy[l, 0], xy[l, 1]) > 0.0
             and orient2d(xy[r, 0], xy[r, 1], xy[x, 0], xy[x, 1], px, py) > 0.0)
+
+
+@cython.ccall
+@cython.nogil
+@cython.exceptval(check=False)
+def splits_after_a_flip(m: Mesh, c: Index, px: cython.double, py: cython.double) -> cython.bint:
+    """Would Triangle's split of edge ``c`` at ``p`` (``split_edge_in_place``,
+    then ``lawson_in_place``) leave counter-clockwise triangles although it
+    does not split ``c`` cleanly?  So where ``p`` lies outside the
+    quadrilateral of the two triangles beside ``c`` across one of its four
+    sides ``u -> w`` only: the split leaves the one clockwise triangle ``(p,
+    u, w)``, and Triangle's flips test its side as any other (the far vertex
+    ``f`` in its circle, by the same incircle, whose sign the clockwise
+    triangle reverses).  Where that test flips the side (no subsegment, a
+    triangle beyond it) and the two triangles the flip leaves, ``(p, u, f)``
+    and ``(p, f, w)``, are counter-clockwise (``p`` lies inside the triangle
+    beyond the side), the mesh is a valid one, and the flips go on as around
+    any vertex.  (A segment's crossing an ulp beside the end (0.4845, 0.0021)
+    of the subsegment it crosses rounds across a side of a sliver beside
+    it: regressions/through-vertex-after-crossing-count.json.)"""
+    tw: Index = m.twin[c]
+    if tw == NO_EDGE:
+        return False
+    xy = m.xy
+    across: Index = NO_EDGE
+    side: Index
+    u: Index
+    w: Index
+    s: cython.double
+    for k in range(4):  # the sides l -> b, b -> r, x -> l, r -> x
+        side = lnext(c) if k == 0 else (lprev(c) if k == 1 else (lprev(tw) if k == 2 else lnext(tw)))
+        u = m.corner[lnext(side)]
+        w = m.corner[lprev(side)]
+        m.work[C_ORIENT] += 1
+        s = orient2d(px, py, xy[u, 0], xy[u, 1], xy[w, 0], xy[w, 1])
+        if s == 0.0 or (s < 0.0 and across != NO_EDGE):
+            return False
+        if s < 0.0:
+            across = side
+    if across == NO_EDGE or m.twin[across] == NO_EDGE or (m.seg.shape[0] > 0 and m.seg[across] != NO_SEG):
+        return False
+    u = m.corner[lnext(across)]
+    w = m.corner[lprev(across)]
+    f: Index = m.corner[m.twin[across]]
+    if f == GHOST:
+        return False
+    m.work[C_INCIRCLE] += 1
+    if not incircle(xy[w, 0], xy[w, 1], px, py, xy[u, 0], xy[u, 1], xy[f, 0], xy[f, 1]) > 0.0:
+        return False
+    m.work[C_ORIENT] += 2
+    return (orient2d(px, py, xy[u, 0], xy[u, 1], xy[f, 0], xy[f, 1]) > 0.0
+            and orient2d(px, py, xy[f, 0], xy[f, 1], xy[w, 0], xy[w, 1]) > 0.0)

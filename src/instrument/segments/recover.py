@@ -41,8 +41,8 @@ import numpy as np
 
 import cython
 from cython.cimports.instrument.core.insert import (
-    flip, flip_in_place, lawson, lawson_in_place, should_flip, split_edge, split_edge_in_place, split_triangle, splits_cleanly,
-    star_edges,
+    flip, flip_in_place, lawson, lawson_in_place, should_flip, split_edge, split_edge_in_place, split_triangle,
+    splits_after_a_flip, splits_cleanly, star_edges,
 )
 from cython.cimports.instrument.core.locate import LOC_INSIDE, LOC_ON_EDGE, LOC_ON_VERTEX, walk
 from cython.cimports.instrument.core.mesh import NO_EDGE, NO_SEG, Index, Mesh, lnext, lprev, next_hull_edge, set_parent, spare_triangles
@@ -1345,10 +1345,14 @@ def _split_at_crossing(
     outside the mesh (``copied``; the caller records it, and it takes
     ``E``'s marker at the end, as Triangle's copy shares ``E``'s
     subsegments), so the output has Triangle's vertices while the mesh
-    stays a valid one.  Elsewhere (the point rounded out of the triangles
-    beside ``c``) ``E`` is taken as before; where the piece crossed other
-    edges before ``c``, ``_recover`` decides that before Triangle's flips
-    (``_beside_splits``) and recovers the piece to ``E`` itself.
+    stays a valid one.  A point rounded out of the triangles beside ``c``
+    across one side of theirs is Triangle's all the same where Triangle's
+    flips after the split turn that side and leave a valid mesh
+    (``splits_after_a_flip``: a sliver beside ``c`` at ``E``,
+    regressions/through-vertex-after-crossing-count.json); elsewhere ``E``
+    is taken as before.  Where the piece crossed other edges before ``c``,
+    ``_recover`` decides that before Triangle's flips (``_beside_splits``)
+    and recovers the piece to ``E`` itself.
     """
     xy = m.xy
     nv: Index = m.nvert
@@ -1385,7 +1389,7 @@ def _split_at_crossing(
             _place_crossing(m, segs, r, nv, bx, by, right, left, bt)
             return end, False, False, True
         if (_an_ulp_off(xy[end, 0], xy[end, 1], bx, by) and _within_subsegment(xy, right, left, bx, by)
-                and splits_cleanly(m, c, bx, by)):
+                and (splits_cleanly(m, c, bx, by) or splits_after_a_flip(m, c, bx, by))):
             beside = True
             t = bt
             px = bx
@@ -1419,7 +1423,7 @@ def _split_at_crossing(
             return b, True, False, False
     status: cython.int
     e: Index
-    if splits_cleanly(m, c, px, py):
+    if splits_cleanly(m, c, px, py) or beside:
         half0: Index = new_record(segs, segs.marker[r], segs.source[r], segs.ends[r, 0], segs.ends[r, 1])
         if half0 < 0:
             return -1, False, False, False
