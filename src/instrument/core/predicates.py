@@ -520,12 +520,37 @@ def _unscale(v: cython.double, p: cython.int) -> cython.double:
 
 
 def _integers(values) -> tuple[list[int], int]:
-    """Integers X_i and k >= 0 with values[i] == X_i / 2^k exactly (every
-    double is a dyadic rational): Python integers keep the whole exponent
-    range, and need no gcd as fractions do."""
-    ratios = [v.as_integer_ratio() for v in values]
-    k = max(d for _, d in ratios).bit_length() - 1
-    return [n << (k - d.bit_length() + 1) for n, d in ratios], k
+    """Integers X_i and k >= 0 with values[i] == X_i / 2^k exactly, for at
+    most 8 finite doubles.  Every nonzero double is an odd integer (at most
+    53 bits) times 2^g, read off in C (frexp, then the mantissa's lowest set
+    bit); k is minus the smallest such g, so the X_i are as short as exact
+    integers over one power of two can be.  Python integers keep the whole
+    exponent range, and need no gcd as fractions do."""
+    n: cython.int = len(values)
+    odd = cython.declare(cython.longlong[8])
+    grid = cython.declare(cython.int[8])
+    m: cython.double
+    e: cython.int
+    whole: cython.longlong
+    t: cython.int
+    low: cython.int = 0
+    for i in range(n):
+        m, e = _norm(values[i], 0)
+        whole = cython.cast(cython.longlong, m * 9007199254740992.0)  # m 2^53, exact
+        odd[i] = 0
+        grid[i] = 0
+        if whole != 0:
+            t = _exponent(cython.cast(cython.double, whole & -whole)) - 1  # its trailing zero bits
+            odd[i] = whole >> t
+            grid[i] = e - 53 + t
+            low = min(low, grid[i])
+    k: cython.int = -low
+    xs = []
+    x: object
+    for i in range(n):
+        x = odd[i]
+        xs.append(x << (grid[i] + k) if odd[i] != 0 else x)
+    return xs, k
 
 
 def _ratio_to_float(num: int, den_exp: int) -> float:
