@@ -361,6 +361,30 @@ def test_integer_fallback_matches_fractions(module):
         assert sign(module.orient2d(*c[:6])) == sign(exact_orient(*c[:6])), c
 
 
+def test_wide_filter_clusters_match_fractions():
+    """Three points in a cluster beside a far point, too wide to scale: the
+    unbounded-exponent filter decides them from a translation to the
+    cluster (its pairs normalized once, products by one doubling, the same
+    pairs frexp gives); every sign against Fractions, in both modes."""
+    rng = np.random.default_rng(34)
+    for _ in range(300):
+        size = 2.0 ** int(rng.integers(-1074, -400))
+        far = 2.0 ** int(rng.integers(0, 1000))
+        centre = rng.uniform(-1, 1, 2) * size * 2.0**60
+        pts = [tuple(centre + rng.integers(-50, 51, 2) * size) for _ in range(3)]
+        pts.append(tuple(rng.uniform(-1, 1, 2) * far))
+        rng.shuffle(pts)
+        c = tuple(float(v) for p in pts for v in p)
+        exact = exact_incircle(*c)
+        assert sign(incircle(*c)) == sign(exact) == sign(SOURCE.incircle(*c)), c
+        assert sign(orient2d(*c[:6])) == sign(exact_orient(*c[:6])) == sign(SOURCE.orient2d(*c[:6])), c
+    for _ in range(2000):
+        am, bm = (float(v) for v in rng.uniform(0.5, 1.0, 2) * rng.choice([-1.0, 1.0], 2))
+        ae, be = (int(v) for v in rng.integers(-3000, 3000, 2))
+        m, e = SOURCE._wmul(am, ae, bm, be)
+        assert (m, e) == SOURCE._norm(am * bm, ae + be)
+
+
 def test_nonfinite_inputs_return():
     nan, inf = math.nan, math.inf
     for args in [(nan, 0.0, 1.0, 0.0, 0.0, 1.0), (inf, 0.0, 1.0, 0.0, 0.0, 1.0),
