@@ -308,6 +308,83 @@ def test_mixed_magnitudes_use_exact_fallback():
     check_incircle(65.0 * big, 0.0, 0.0, 65.0 * big, -65.0 * big, 0.0, small, -65.0 * big)
 
 
+def _wide_lattice_values(rng, n):
+    """Doubles from every part of the range: zeros, subnormals, powers of two,
+    integers with trailing zero bits, and random ones at 2^-1074..2^1023."""
+    special = [0.0, 5e-324, 1e-323, 2.0**-1022, 2.0**-500, 1.0, 3.0, 2.0**53 + 2.0, 2.0**1023,
+               1.7976931348623157e308, float.fromhex("0x1.0000000004000p-1022"), float.fromhex("0x1.4430bep-73")]
+    out = []
+    for _ in range(n):
+        if rng.random() < 0.4:
+            v = special[int(rng.integers(len(special)))]
+        else:
+            v = math.ldexp(float(rng.uniform(0.5, 1.0)), int(rng.integers(-1073, 1025)))
+        out.append(v if rng.random() < 0.5 else -v)
+    return out
+
+
+@pytest.mark.parametrize("module", [P, SOURCE], ids=["compiled", "python"])
+def test_integer_fallback_matches_fractions(module):
+    """The Python-integer fallback (calls whose coordinates span too much to
+    scale): its integers are exact and as short as one denominator allows,
+    and its determinants are the correctly rounded exact ones."""
+    rng = np.random.default_rng(33)
+    for _ in range(400):
+        vals = _wide_lattice_values(rng, 8)
+        xs, k = module._integers(vals)
+        assert k >= 0 and all(Fraction(x, 2**k) == Fraction(v) for x, v in zip(xs, vals)), vals
+        assert k == 0 or any(x % 2 for x in xs), (vals, k)
+    lattice = 2.0**-1074
+    cases = [tuple(_wide_lattice_values(rng, 8)) for _ in range(300)]
+    # cocircular (the radius-65 circle's lattice points) and collinear, at
+    # the bottom and top of the range, beside a far point that makes them wide
+    for unit in (lattice, 2.0**-1000, 2.0**-500, 1.0, 2.0**900):
+        ring = [(65.0, 0.0), (0.0, 65.0), (-65.0, 0.0), (0.0, -65.0), (63.0, 16.0), (-33.0, 56.0), (25.0, -60.0)]
+        pts = [(x * unit, y * unit) for x, y in ring]
+        cases.append(sum(pts[:4], ()))
+        cases.append(sum(pts[3:7], ()))
+        cases.append((0.0, 0.0, 3 * unit, unit, 6 * unit, 2 * unit, 1.0, 2.0**-1022))
+    # the denormal case's shapes: a point at (2^-500, 2^-1022), halvings of a far point
+    far = (float.fromhex("0x1.4430bep0"), float.fromhex("0x1.ef53c3e1deb1ep0"))
+    near = (float.fromhex("0x1.d932f501d09a3p-2"), float.fromhex("0x1.e236340000000p-14"))
+    for t in range(60, 80):
+        fx, fy = math.ldexp(far[0], -t), math.ldexp(far[1], -t)
+        cases.append((2 * fx, 2 * fy, 2.0**-500, 2.0**-1022, *near, fx, fy))
+    for c in cases:
+        exact = exact_incircle(*c)
+        for got, want in ((module._incircle_integer(*c), exact),
+                          (module._orient2d_integer(*c[:6]), exact_orient(*c[:6]))):
+            assert sign(got) == sign(want), c
+            if 2.0**-1022 <= abs(want) <= 1.7976931348623157e308:
+                assert got == float(want), c
+        assert sign(module.incircle(*c)) == sign(exact), c
+        assert sign(module.orient2d(*c[:6])) == sign(exact_orient(*c[:6])), c
+
+
+def test_wide_filter_clusters_match_fractions():
+    """Three points in a cluster beside a far point, too wide to scale: the
+    unbounded-exponent filter decides them from a translation to the
+    cluster (its pairs normalized once, products by one doubling, the same
+    pairs frexp gives); every sign against Fractions, in both modes."""
+    rng = np.random.default_rng(34)
+    for _ in range(300):
+        size = 2.0 ** int(rng.integers(-1074, -400))
+        far = 2.0 ** int(rng.integers(0, 1000))
+        centre = rng.uniform(-1, 1, 2) * size * 2.0**60
+        pts = [tuple(centre + rng.integers(-50, 51, 2) * size) for _ in range(3)]
+        pts.append(tuple(rng.uniform(-1, 1, 2) * far))
+        rng.shuffle(pts)
+        c = tuple(float(v) for p in pts for v in p)
+        exact = exact_incircle(*c)
+        assert sign(incircle(*c)) == sign(exact) == sign(SOURCE.incircle(*c)), c
+        assert sign(orient2d(*c[:6])) == sign(exact_orient(*c[:6])) == sign(SOURCE.orient2d(*c[:6])), c
+    for _ in range(2000):
+        am, bm = (float(v) for v in rng.uniform(0.5, 1.0, 2) * rng.choice([-1.0, 1.0], 2))
+        ae, be = (int(v) for v in rng.integers(-3000, 3000, 2))
+        m, e = SOURCE._wmul(am, ae, bm, be)
+        assert (m, e) == SOURCE._norm(am * bm, ae + be)
+
+
 def test_nonfinite_inputs_return():
     nan, inf = math.nan, math.inf
     for args in [(nan, 0.0, 1.0, 0.0, 0.0, 1.0), (inf, 0.0, 1.0, 0.0, 0.0, 1.0),

@@ -520,12 +520,37 @@ def _unscale(v: cython.double, p: cython.int) -> cython.double:
 
 
 def _integers(values) -> tuple[list[int], int]:
-    """Integers X_i and k >= 0 with values[i] == X_i / 2^k exactly (every
-    double is a dyadic rational): Python integers keep the whole exponent
-    range, and need no gcd as fractions do."""
-    ratios = [v.as_integer_ratio() for v in values]
-    k = max(d for _, d in ratios).bit_length() - 1
-    return [n << (k - d.bit_length() + 1) for n, d in ratios], k
+    """Integers X_i and k >= 0 with values[i] == X_i / 2^k exactly, for at
+    most 8 finite doubles.  Every nonzero double is an odd integer (at most
+    53 bits) times 2^g, read off in C (frexp, then the mantissa's lowest set
+    bit); k is minus the smallest such g, so the X_i are as short as exact
+    integers over one power of two can be.  Python integers keep the whole
+    exponent range, and need no gcd as fractions do."""
+    n: cython.int = len(values)
+    odd = cython.declare(cython.longlong[8])
+    grid = cython.declare(cython.int[8])
+    m: cython.double
+    e: cython.int
+    whole: cython.longlong
+    t: cython.int
+    low: cython.int = 0
+    for i in range(n):
+        m, e = _norm(values[i], 0)
+        whole = cython.cast(cython.longlong, m * 9007199254740992.0)  # m 2^53, exact
+        odd[i] = 0
+        grid[i] = 0
+        if whole != 0:
+            t = _exponent(cython.cast(cython.double, whole & -whole)) - 1  # its trailing zero bits
+            odd[i] = whole >> t
+            grid[i] = e - 53 + t
+            low = min(low, grid[i])
+    k: cython.int = -low
+    xs = []
+    x: object
+    for i in range(n):
+        x = odd[i]
+        xs.append(x << (grid[i] + k) if odd[i] != 0 else x)
+    return xs, k
 
 
 def _ratio_to_float(num: int, den_exp: int) -> float:
@@ -596,7 +621,14 @@ def _norm(m: cython.double, e: cython.int) -> tuple[cython.double, cython.int]:
 @cython.nogil
 @cython.exceptval(check=False)
 def _wmul(am: cython.double, ae: cython.int, bm: cython.double, be: cython.int) -> tuple[cython.double, cython.int]:
-    return _norm(am * bm, ae + be)
+    """a b of normalized pairs: the mantissas' product lies in [0.25, 1), so
+    at most one exact doubling normalizes it (the pair frexp would give)."""
+    m: cython.double = am * bm
+    e: cython.int = ae + be
+    if m != 0.0 and fabs(m) < 0.5:
+        m *= 2.0
+        e -= 1
+    return m, e
 
 
 @cython.cfunc
@@ -637,51 +669,37 @@ def _wabove(am: cython.double, ae: cython.int, bm: cython.double, be: cython.int
 @cython.inline
 @cython.nogil
 @cython.exceptval(check=False)
-def _wprod(x: cython.double, y: cython.double) -> tuple[cython.double, cython.int]:
-    """x * y of two doubles as a pair."""
-    xm: cython.double
-    xe: cython.int
-    ym: cython.double
-    ye: cython.int
-    xm, xe = _norm(x, 0)
-    ym, ye = _norm(y, 0)
-    return _wmul(xm, xe, ym, ye)
-
-
-@cython.cfunc
-@cython.inline
-@cython.nogil
-@cython.exceptval(check=False)
-def _wminor(p: cython.double, q: cython.double, r: cython.double, s: cython.double,
+def _wminor(pm: cython.double, pe: cython.int, qm: cython.double, qe: cython.int,
+            um: cython.double, ue: cython.int, vm: cython.double, ve: cython.int,
             ) -> tuple[cython.double, cython.int, cython.double, cython.int]:
-    """p q - r s and its permanent |p q| + |r s|, as pairs."""
+    """p q - u v and its permanent |p q| + |u v| of normalized pairs, as pairs."""
     m1: cython.double
     e1: cython.int
     m2: cython.double
     e2: cython.int
-    m1, e1 = _wprod(p, q)
-    m2, e2 = _wprod(r, s)
+    m1, e1 = _wmul(pm, pe, qm, qe)
+    m2, e2 = _wmul(um, ue, vm, ve)
     dm: cython.double
     de: cython.int
-    pm: cython.double
-    pe: cython.int
+    am: cython.double
+    ae: cython.int
     dm, de = _wadd(m1, e1, -m2, e2)
-    pm, pe = _wadd(fabs(m1), e1, fabs(m2), e2)
-    return dm, de, pm, pe
+    am, ae = _wadd(fabs(m1), e1, fabs(m2), e2)
+    return dm, de, am, ae
 
 
 @cython.cfunc
 @cython.inline
 @cython.nogil
 @cython.exceptval(check=False)
-def _wsquares(x: cython.double, y: cython.double) -> tuple[cython.double, cython.int]:
-    """x^2 + y^2 as a pair."""
+def _wsquares(xm: cython.double, xe: cython.int, ym: cython.double, ye: cython.int) -> tuple[cython.double, cython.int]:
+    """x^2 + y^2 of normalized pairs, as a pair."""
     m1: cython.double
     e1: cython.int
     m2: cython.double
     e2: cython.int
-    m1, e1 = _wprod(x, x)
-    m2, e2 = _wprod(y, y)
+    m1, e1 = _wmul(xm, xe, xm, xe)
+    m2, e2 = _wmul(ym, ye, ym, ye)
     return _wadd(m1, e1, m2, e2)
 
 
@@ -705,7 +723,19 @@ def _orient2d_wide_at(
     de: cython.int
     sm: cython.double
     se: cython.int
-    dm, de, sm, se = _wminor(acx, bcy, acy, bcx)
+    acxm: cython.double
+    acxe: cython.int
+    bcxm: cython.double
+    bcxe: cython.int
+    acym: cython.double
+    acye: cython.int
+    bcym: cython.double
+    bcye: cython.int
+    acxm, acxe = _norm(acx, 0)
+    bcxm, bcxe = _norm(bcx, 0)
+    acym, acye = _norm(acy, 0)
+    bcym, bcye = _norm(bcy, 0)
+    dm, de, sm, se = _wminor(acxm, acxe, bcym, bcye, acym, acye, bcxm, bcxe)
     bm: cython.double
     be: cython.int
     bm, be = _norm(_CCW_WIDE, 0)
@@ -778,27 +808,46 @@ def _incircle_wide_at(
     bce: cython.int
     bcpm: cython.double
     bcpe: cython.int
-    bcm, bce, bcpm, bcpe = _wminor(bdx, cdy, cdx, bdy)
+    # each difference normalized once
+    adxm: cython.double
+    adxe: cython.int
+    bdxm: cython.double
+    bdxe: cython.int
+    cdxm: cython.double
+    cdxe: cython.int
+    adym: cython.double
+    adye: cython.int
+    bdym: cython.double
+    bdye: cython.int
+    cdym: cython.double
+    cdye: cython.int
+    adxm, adxe = _norm(adx, 0)
+    bdxm, bdxe = _norm(bdx, 0)
+    cdxm, cdxe = _norm(cdx, 0)
+    adym, adye = _norm(ady, 0)
+    bdym, bdye = _norm(bdy, 0)
+    cdym, cdye = _norm(cdy, 0)
+    bcm, bce, bcpm, bcpe = _wminor(bdxm, bdxe, cdym, cdye, cdxm, cdxe, bdym, bdye)
     cam: cython.double
     cae: cython.int
     capm: cython.double
     cape: cython.int
-    cam, cae, capm, cape = _wminor(cdx, ady, adx, cdy)
+    cam, cae, capm, cape = _wminor(cdxm, cdxe, adym, adye, adxm, adxe, cdym, cdye)
     abm: cython.double
     abe: cython.int
     abpm: cython.double
     abpe: cython.int
-    abm, abe, abpm, abpe = _wminor(adx, bdy, bdx, ady)
+    abm, abe, abpm, abpe = _wminor(adxm, adxe, bdym, bdye, bdxm, bdxe, adym, adye)
     # the lifts
     alm: cython.double
     ale: cython.int
-    alm, ale = _wsquares(adx, ady)
+    alm, ale = _wsquares(adxm, adxe, adym, adye)
     blm: cython.double
     ble: cython.int
-    blm, ble = _wsquares(bdx, bdy)
+    blm, ble = _wsquares(bdxm, bdxe, bdym, bdye)
     clm: cython.double
     cle: cython.int
-    clm, cle = _wsquares(cdx, cdy)
+    clm, cle = _wsquares(cdxm, cdxe, cdym, cdye)
     # det = alift * bc + blift * ca + clift * ab, and its permanent
     dm: cython.double
     de: cython.int
