@@ -27,26 +27,17 @@ ours, which the harness merges as a near-duplicate; not followed yet.)
 from __future__ import annotations
 
 import json
-import pickle
-import subprocess
-import sys
-from fractions import Fraction
 from pathlib import Path
 
 import numpy as np
 
 import instrument
 from instrument.check import check_mesh
+from triangle_runs import folded, triangle_meshes
 
 CASE = Path(__file__).parents[1] / "differential" / "regressions" / "through-vertex-after-crossing.json"
 E = 6  # the end of Y beside S
 
-_TRIANGLE = r"""
-import pickle, sys, triangle
-runs = pickle.load(sys.stdin.buffer)
-out = [triangle.triangulate(inp, sw) for inp, sw in runs]
-sys.stdout.buffer.write(pickle.dumps([(r["vertices"], r.get("triangles", []), r.get("segments", [])) for r in out]))
-"""
 
 
 def _case() -> dict:
@@ -67,32 +58,19 @@ def _inputs() -> list[dict]:
     return out
 
 
-def _triangle(runs):
-    done = subprocess.run([sys.executable, "-c", _TRIANGLE], input=pickle.dumps(runs), capture_output=True,
-                          timeout=120, check=True)
-    return pickle.loads(done.stdout)
-
-
-def _folded(vertices, triangles) -> bool:
-    w = [[Fraction(c) for c in p] for p in vertices.tolist()]
-
-    def orient(a, b, c):
-        return (w[b][0] - w[a][0]) * (w[c][1] - w[a][1]) - (w[b][1] - w[a][1]) * (w[c][0] - w[a][0])
-
-    return any(orient(*t) <= 0 for t in np.asarray(triangles).tolist())
 
 
 def test_beside_vertex_after_crossing_makes_triangles_vertices():
     inputs = _inputs()
     runs = [(i, sw) for i in inputs for sw in ("pQ", "pcQ", "pDQ")]
     folds = set()
-    for (inp, sw), (t_vertices, t_triangles, t_segments) in zip(runs, _triangle(runs)):
+    for (inp, sw), (t_vertices, t_triangles, t_segments) in zip(runs, triangle_meshes(runs)):
         ours = instrument.triangulate(inp, sw)
         assert check_mesh(ours, pslg=inp) == []
         assert np.array_equal(ours["vertices"], t_vertices), (sw, inp["vertices"][E].tolist())
         assert len(ours.get("triangles", ())) == len(t_triangles)
         if sw == "pcQ":
-            folds.add(_folded(t_vertices, t_triangles))
+            folds.add(folded(t_vertices, t_triangles))
     assert folds == {True, False}  # Triangle's flips pass E by (folded) for some k, meet Y for others
 
 
@@ -101,11 +79,11 @@ def test_campaign_case_keeps_triangles_vertices():
     for bit (ours made a crossing vertex 12 ulps beside E before); under pcQ
     Triangle's 29 triangles too, where Triangle's own mesh is folded."""
     inp = _case()
-    theirs = _triangle([(inp, "pQ"), (inp, "pcQ")])
+    theirs = triangle_meshes([(inp, "pQ"), (inp, "pcQ")])
     for sw, (t_vertices, t_triangles, _) in zip(("pQ", "pcQ"), theirs):
         ours = instrument.triangulate(inp, sw)
         assert check_mesh(ours, pslg=inp) == []
         assert np.array_equal(ours["vertices"], t_vertices)
         if sw == "pcQ":
             assert len(ours["triangles"]) == len(t_triangles) == 29
-            assert _folded(t_vertices, t_triangles)
+            assert folded(t_vertices, t_triangles)

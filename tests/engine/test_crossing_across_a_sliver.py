@@ -24,26 +24,17 @@ vertices are Triangle's bit for bit and the triangle counts equal.
 from __future__ import annotations
 
 import json
-import pickle
-import subprocess
-import sys
-from fractions import Fraction
 from pathlib import Path
 
 import numpy as np
 
 import instrument
 from instrument.check import check_mesh
+from triangle_runs import folded, triangle_meshes
 
 CASE = Path(__file__).parents[1] / "differential" / "regressions" / "through-vertex-after-crossing-count.json"
 E, V, FAR = 15, 18, 17
 
-_TRIANGLE = r"""
-import pickle, sys, triangle
-runs = pickle.load(sys.stdin.buffer)
-out = [triangle.triangulate(inp, sw) for inp, sw in runs]
-sys.stdout.buffer.write(pickle.dumps([(r["vertices"], r.get("triangles", [])) for r in out]))
-"""
 
 
 def _case() -> dict:
@@ -59,25 +50,12 @@ def _moved(base: dict, vertex: int, coord: int, k: int) -> dict:
     return {"vertices": v, "segments": base["segments"]}
 
 
-def _triangle(runs):
-    done = subprocess.run([sys.executable, "-c", _TRIANGLE], input=pickle.dumps(runs), capture_output=True,
-                          timeout=120, check=True)
-    return pickle.loads(done.stdout)
-
-
-def _folded(vertices, triangles) -> bool:
-    w = [[Fraction(c) for c in p] for p in vertices.tolist()]
-
-    def orient(a, b, c):
-        return (w[b][0] - w[a][0]) * (w[c][1] - w[a][1]) - (w[b][1] - w[a][1]) * (w[c][0] - w[a][0])
-
-    return any(orient(*t) <= 0 for t in np.asarray(triangles).tolist())
 
 
 def test_campaign_case_splits_beside_the_end():
     """Triangle's 23 vertices bit for bit (its crossing vertex beside E, not E)."""
     inp = _case()
-    (t_vertices, t_triangles), = _triangle([(inp, "pQ")])
+    (t_vertices, t_triangles, _), = triangle_meshes([(inp, "pQ")])
     ours = instrument.triangulate(inp, "pQ")
     assert check_mesh(ours, pslg=inp) == []
     assert np.array_equal(ours["vertices"], t_vertices)
@@ -94,10 +72,10 @@ def test_moved_by_ulps_keeps_triangles_vertices():
     moves += [(FAR, c, k) for c in (0, 1) for k in range(-16, 17, 4)] + [(E, 0, k) for k in range(-8, 9, 2)]
     runs = [(_moved(base, *mv), sw) for mv in moves for sw in ("pQ", "pcQ")]
     compared = 0
-    for (inp, sw), (t_vertices, t_triangles) in zip(runs, _triangle(runs)):
+    for (inp, sw), (t_vertices, t_triangles, _) in zip(runs, triangle_meshes(runs)):
         ours = instrument.triangulate(inp, sw)
         assert check_mesh(ours, pslg=inp) == []
-        if _folded(t_vertices, t_triangles):
+        if folded(t_vertices, t_triangles):
             continue  # no reference
         compared += 1
         assert np.array_equal(ours["vertices"], t_vertices), sw
