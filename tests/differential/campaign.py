@@ -52,6 +52,7 @@ class Campaign:
         self.written: set[str] = set()
         self.triangle_status: Counter = Counter()
         self.explained: Counter = Counter()  # failures per open defect of known.py
+        self.explained_kinds: Counter = Counter()  # ... and per kind of failure ("defect: kind@family")
         self.by_family: Counter = Counter()
         self.confirmed: dict = {}
         self.cases = 0
@@ -92,6 +93,7 @@ class Campaign:
                     open_sigs.add(f.signature)
                 else:
                     self.explained[defect.id] += 1
+                    self.explained_kinds[f"{defect.id}: {f.kind}@{run.case.family}"] += 1
             entry = self._entry(run.verdict, run.triangle, run.ours)
             for sig in sorted(open_sigs):
                 self._note(sig, run.case.family, run.case, entry)
@@ -157,6 +159,7 @@ class Campaign:
             "failures_per_signature": dict(per_sig.most_common()),
             "failures": dict(self.counts.most_common()),
             "explained_by_open_defects": dict(self.explained.most_common()),
+            "explained_by_kind": dict(self.explained_kinds.most_common()),
             "triangle_not_ok": dict(self.triangle_status.most_common()),
             "ours_worker_restarts": self.runners.ours.restarts,
             "triangle_worker_restarts": self.runners.triangle.restarts,
