@@ -75,9 +75,10 @@ POOL_TOP = cython.declare(cython.longlong, -3)
 POOL_BELOW = cython.declare(cython.longlong, -4)
 
 #: A deletion's ghost whose record outlives the deletion as one of its
-#: polygon's triangles (deletion_orientations): KEPT_BY - that slot.  Its
-#: orientation is Triangle's own, where a rejected point's ghost in a kept
-#: record (named by its slot) has it relative to ours' layout.
+#: polygon's triangles (deletion_orientations): KEPT_BY - that slot, until a
+#: later deletion frees the record (deletion_freed) or the next vertex comes
+#: (revive_ghosts drops it: Triangle's serving such an entry again when a
+#: split remakes its triangle there is not established).
 KEPT_BY = cython.declare(cython.longlong, -(1 << 40))
 
 
@@ -101,19 +102,6 @@ def _ghost_name(r: Refiner, k: Index) -> Index:
     if r.ghost_swapped and (k == NEW_FIRST or k == NEW_SECOND):
         return NEW_FIRST + NEW_SECOND - k
     return k
-
-
-@cython.cfunc
-@cython.inline
-@cython.nogil
-@cython.exceptval(check=False)
-def _record_name(r: Refiner, k: Index) -> Index:
-    """The record a ghost row's stored name ``k`` stands for, as a fan's
-    ``r.fan_rec`` names it: a slot for a kept record (KEPT_BY's too), else
-    a new record's name (_ghost_name)."""
-    if k <= KEPT_BY:
-        return KEPT_BY - k
-    return _ghost_name(r, k)
 
 
 @cython.cfunc
@@ -388,8 +376,14 @@ def revive_ghosts(r: Refiner, m: Mesh, ok: cython.bint, nb: Index, two: cython.b
         if not ghost_pending(r, m, g):
             g -= 1
             continue
+        if r.ghost[g, 3] <= KEPT_BY:
+            # a record a deletion's polygon kept: only a later deletion that
+            # frees it is followed (deletion_freed), not a split remaking it
+            r.ghost[g, 0] = -1
+            g -= 1
+            continue
         if r.ghost[g, 2] != m.nvert:
-            k = _record_name(r, r.ghost[g, 3])
+            k = _ghost_name(r, r.ghost[g, 3])
             if k == POOL_TOP or k == POOL_BELOW:
                 # one of the last deletion's records: a split point on the
                 # boundary takes the top one, and the one under it is the
@@ -409,7 +403,7 @@ def revive_ghosts(r: Refiner, m: Mesh, ok: cython.bint, nb: Index, two: cython.b
         if ok:
             for j in range(nb):
                 if (r.bnd[r.fan[j], 1] == r.ghost[g, 0] and r.bnd[r.fan[j], 2] == r.ghost[g, 1]
-                        and r.fan_rec[j, 0] == _record_name(r, r.ghost[g, 3]) and r.fan_rec[j, 1] == r.ghost[g, 4]):
+                        and r.fan_rec[j, 0] == _ghost_name(r, r.ghost[g, 3]) and r.fan_rec[j, 1] == r.ghost[g, 4]):
                     live = True
                     break
         ghost_revive(r, g, live)
