@@ -44,7 +44,10 @@ served again if the split remakes its triangle in that entry's record and
 orientation (deletion_ghosts, deletion_freed).  That needs the entry's
 orientation in Triangle's terms: known for entries queued by an insertion
 (in a new record, or a kept one whose orientation was known) or by a
-deletion's flips (note_born, note_deleted).
+deletion's flips (note_born, note_deleted).  Such an entry whose record
+the deletion keeps, as an ear of its polygon, waits there until a later
+deletion frees that record, and is served again when the vertex after that
+deletion's subsegment split takes it (deletion_freed, _kept_ghosts).
 """
 
 from __future__ import annotations
