@@ -44,7 +44,10 @@ served again if the split remakes its triangle in that entry's record and
 orientation (deletion_ghosts, deletion_freed).  That needs the entry's
 orientation in Triangle's terms: known for entries queued by an insertion
 (in a new record, or a kept one whose orientation was known) or by a
-deletion's flips (note_born, note_deleted).
+deletion's flips (note_born, note_deleted).  Such an entry whose record
+the deletion keeps, as an ear of its polygon, waits there until a later
+deletion frees that record, and is served again when the vertex after that
+deletion's subsegment split takes it (deletion_freed, _kept_ghosts).
 """
 
 from __future__ import annotations
@@ -65,6 +68,21 @@ NEW_SECOND = cython.declare(cython.longlong, -2)
 #: set (regressions/points-q32.5-stale-record-size.json: 1243 vertices as
 #: Triangle; the first gives 1248; the q34 set agrees either way).
 FREED_LAST = cython.declare(cython.longlong, -2)
+
+#: A deletion's ghost waits past the next vertex in one of the two records
+#: the deletion freed (deletion_freed): the one handed out first (POOL_TOP)
+#: or the one under it (POOL_BELOW).  A subsegment's split point on the
+#: boundary takes one record, the top: the one under it is the next
+#: split's first (revive_ghosts).
+POOL_TOP = cython.declare(cython.longlong, -3)
+POOL_BELOW = cython.declare(cython.longlong, -4)
+
+#: A deletion's ghost whose record outlives the deletion as one of its
+#: polygon's triangles (deletion_orientations): KEPT_BY - that slot, until a
+#: later deletion frees the record (deletion_freed) or the next vertex comes
+#: (revive_ghosts drops it: Triangle's serving such an entry again when a
+#: split remakes its triangle there is not established).
+KEPT_BY = cython.declare(cython.longlong, -(1 << 40))
 
 
 @cython.cfunc
@@ -361,12 +379,26 @@ def revive_ghosts(r: Refiner, m: Mesh, ok: cython.bint, nb: Index, two: cython.b
         if not ghost_pending(r, m, g):
             g -= 1
             continue
+        if r.ghost[g, 3] <= KEPT_BY:
+            # a record a deletion's polygon kept: only a later deletion that
+            # frees it is followed (deletion_freed), not a split remaking it
+            r.ghost[g, 0] = -1
+            g -= 1
+            continue
         if r.ghost[g, 2] != m.nvert:
+            k = _ghost_name(r, r.ghost[g, 3])
+            if k == POOL_TOP or k == POOL_BELOW:
+                # one of the last deletion's records: a split point on the
+                # boundary takes the top one, and the one under it is the
+                # next split's first; a split taking two takes both
+                if two or k == POOL_TOP:
+                    r.ghost[g, 0] = -1
+                else:
+                    r.ghost[g, 3] = _ghost_name(r, FREED_LAST)
             # a new record's name holds if the pool is as it was (the split
             # took the two the deletion freed), a kept one if the split
             # leaves its triangle alone (outside the cavity, tflag 1)
-            k = _ghost_name(r, r.ghost[g, 3])
-            if (k < 0 and not two) or (k >= 0 and m.tflag[k] == 1):
+            elif (k < 0 and not two) or (k >= 0 and m.tflag[k] == 1):
                 r.ghost[g, 0] = -1
             g -= 1
             continue
@@ -476,13 +508,24 @@ def deletion_ghosts(r: Refiner, m: Mesh, v: Index, tris: cython.longlong[:], d: 
     g: Index = r.nghost - 1
     c: Index
     # the ghosts that now wait for a later vertex keep a kept record only if
-    # the deletion leaves it alone (not a triangle of the star)
+    # the deletion leaves it alone (not a triangle of the star), but for a
+    # deletion's ghost in a record that outlived that deletion: this one
+    # frees it or keeps it again (deletion_freed, deletion_orientations),
+    # as with the star's own entries; and the records an earlier deletion
+    # freed are under this one's in the pool (no longer followed)
     while g >= 0 and ghost_recent(r, m, g):
-        if ghost_pending(r, m, g) and r.ghost[g, 3] >= 0:
-            for k in range(d):
-                if tris[k] == r.ghost[g, 3]:
-                    r.ghost[g, 0] = -1
-                    break
+        if ghost_pending(r, m, g):
+            c = r.ghost[g, 3]
+            if c == POOL_TOP or c == POOL_BELOW:
+                r.ghost[g, 0] = -1
+            elif c >= 0 or c <= KEPT_BY:
+                for k in range(d):
+                    if tris[k] == (c if c >= 0 else KEPT_BY - c):
+                        if c >= 0 or k == 0:
+                            r.ghost[g, 0] = -1
+                        else:
+                            r.ghost[g, 3] = STAR_PLACE - k
+                        break
         g -= 1
     for k in range(1, d):
         t = tris[k]
@@ -518,18 +561,32 @@ def deletion_freed(r: Refiner, m: Mesh, j: Index, d: Index) -> cython.void:
     record (counter-clockwise), so the two that go with it are the last
     triangle of each side, (v, w[j-1], w[j]) and (v, w[d-1], w[0]), the
     first freed last (the subsegment's split takes it first).  Their
-    ghosts wait under those names; the others are dropped."""
+    ghosts wait under those names, the next vertex's (FREED_LAST and the
+    other), or for the vertex after it POOL_TOP and POOL_BELOW (a ghost
+    that an earlier deletion's record kept: revive_ghosts); the others
+    are the polygon's records now (deletion_orientations).
+
+    Case 50 of the near-collinear chains under pq34a0.000899cvi shows the
+    latter (Triangle's -VVV record pointers): a deletion's flip queues a
+    triangle in record R, orientation 0; the next deletion, of one of its
+    vertices, keeps R as an ear of its polygon; a third frees R and a
+    record under it in the pool; the boundary split point takes the
+    third's vertex record and the top triangle record, the next
+    circumcenter the second's vertex record and R as its split's first
+    new record, and its flips leave the entry's triangle there again."""
     g: Index = r.nghost - 1
     k: Index
+    later: cython.bint
     while g >= 0 and ghost_recent(r, m, g):
         k = STAR_PLACE - r.ghost[g, 3]
-        if ghost_pending(r, m, g) and r.ghost[g, 3] <= STAR_PLACE:
-            if k == j - 1:
-                r.ghost[g, 3] = _ghost_name(r, FREED_LAST)
-            elif k == d - 1:
-                r.ghost[g, 3] = _ghost_name(r, NEW_FIRST + NEW_SECOND - FREED_LAST)
-            else:
+        if ghost_pending(r, m, g) and STAR_PLACE - d < r.ghost[g, 3] <= STAR_PLACE and (k == j - 1 or k == d - 1):
+            later = r.ghost[g, 2] != m.nvert
+            if later and r.ghost[g, 2] != m.nvert + 1:
                 r.ghost[g, 0] = -1
+            elif k == j - 1:
+                r.ghost[g, 3] = POOL_TOP if later else _ghost_name(r, FREED_LAST)
+            else:
+                r.ghost[g, 3] = POOL_BELOW if later else _ghost_name(r, NEW_FIRST + NEW_SECOND - FREED_LAST)
         g -= 1
 
 
@@ -591,6 +648,12 @@ def deletion_orientations(r: Refiner, m: Mesh, order: cython.longlong[:], made: 
     z: Index
     p: Index
     n: Index
+    # which star place's record each place's triangle holds (r.fan_rec's
+    # column 0), and which ear keeps each place's record (column 1; -1: freed
+    # or the base's), for the ghosts in them (_kept_ghosts)
+    for i in range(d):
+        r.fan_rec[i, 0] = i
+        r.fan_rec[i, 1] = -1
     for i in range(made - 1):
         t = order[i]
         z = _place(slot[m.corner[3 * t]], d)
@@ -599,7 +662,10 @@ def deletion_orientations(r: Refiner, m: Mesh, order: cython.longlong[:], made: 
         if _place(slot[m.corner[3 * t + 1]], d) != n or _place(slot[m.corner[3 * t + 2]], d) != p:
             for j in range(i, made - 1):
                 r.orient[order[j], 1] = 0
+            _kept_ghosts(r, m, d)
             return
+        r.fan_rec[r.fan_rec[p, 0], 1] = t
+        r.fan_rec[p, 0] = r.fan_rec[z, 0]
         # ours' edge 0 of (z, n, p) is n -> p, the ear's handle
         r.orient[t, 0] = _up(r.lineage[p, 0], 2)
         r.orient[t, 1] = m.stamp[t] if r.lineage[p, 1] else 0
@@ -608,6 +674,27 @@ def deletion_orientations(r: Refiner, m: Mesh, order: cython.longlong[:], made: 
         r.lineage[p, 1] = r.lineage[z, 1]
         r.lineage[p, 3] = n
         r.lineage[n, 2] = p
+    _kept_ghosts(r, m, d)
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _kept_ghosts(r: Refiner, m: Mesh, d: Index) -> cython.void:
+    """The ghosts of the star places whose records the deletion's polygon
+    keeps (``r.fan_rec[:d, 1]``: deletion_orientations) wait in them under
+    their triangles' slots (KEPT_BY); the others (the base's record, or a
+    triangulation not followed) are dropped."""
+    g: Index = r.nghost - 1
+    k: Index
+    while g >= 0 and ghost_recent(r, m, g):
+        k = STAR_PLACE - r.ghost[g, 3]
+        if ghost_pending(r, m, g) and 0 <= k < d:
+            if r.fan_rec[k, 1] >= 0:
+                r.ghost[g, 3] = KEPT_BY - r.fan_rec[k, 1]
+            else:
+                r.ghost[g, 0] = -1
+        g -= 1
 
 
 @cython.ccall
