@@ -196,7 +196,6 @@ def _drop_other_lines(pp, ps, t, ids, X, U, W, S, ends):
     after its end outside the mesh (Triangle's mesh and ours alike).  A
     crossing vertex of j and k stays a node: its subsegments along k leave j's
     line.  ``ends`` maps each segment to its ends' output vertices."""
-    keep = np.ones(len(pp), bool)
     if not len(pp):
         return pp, ps, t
     exact = orient_signs(U[ps], W[ps], X[pp]) == 0
@@ -206,6 +205,7 @@ def _drop_other_lines(pp, ps, t, ids, X, U, W, S, ends):
     candidates = [k for k in np.flatnonzero(~exact).tolist() if int(pp[k]) in on]
     if not candidates:
         return pp, ps, t
+    keep = np.ones(len(pp), bool)
     nodes = defaultdict(set)  # segment -> its nodes and ends (output vertices)
     for v, k in zip(ids[pp].tolist(), ps.tolist()):
         nodes[k].add(v)
